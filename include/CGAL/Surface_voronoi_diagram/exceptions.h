@@ -9,6 +9,7 @@
 #define CGAL_SURFACE_VORONOI_DIAGRAM_EXCEPTIONS_H
 
 #include <stdexcept>
+#include <cstddef>
 #include <string>
 
 namespace CGAL {
@@ -28,6 +29,29 @@ class Input_error : public Error
 {
 public:
   explicit Input_error(const std::string& what) : Error(what) {}
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// Two sites are at the same surface point; `first` and `second` are their indices.
+class Coincident_sites_error : public Input_error
+{
+public:
+  Coincident_sites_error(const std::string& what, std::size_t first, std::size_t second)
+    : Input_error(what), first(first), second(second)
+  {}
+  std::size_t first, second;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// A site given as a point is farther from the surface than the allowed distance.
+class Site_too_far_error : public Input_error
+{
+public:
+  Site_too_far_error(const std::string& what, std::size_t site, double distance)
+    : Input_error(what), site(site), distance(distance)
+  {}
+  std::size_t site;
+  double distance;
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramRef

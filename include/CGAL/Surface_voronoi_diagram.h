@@ -1,0 +1,452 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Voronoi diagrams restricted to a triangle-mesh surface, for any metric given per vertex
+// (an embedding such as the biharmonic one) or lazily per (site, vertex): SurfaceVoronoi's
+// propagate-and-cut with exact per-face cutting, stitched into one consistent partition,
+// with every cell checked (and repaired) to be one connected region.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_H
+
+#include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+#include <CGAL/Surface_voronoi_diagram/options.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/connectivity.h>
+#include <CGAL/Surface_voronoi_diagram/internal/cutting.h>
+#include <CGAL/Surface_voronoi_diagram/internal/global_nearest.h>
+#include <CGAL/Surface_voronoi_diagram/internal/propagation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/site_fields.h>
+#include <CGAL/Surface_voronoi_diagram/internal/sites.h>
+#include <CGAL/Surface_voronoi_diagram/internal/stitching.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+///
+/// The Voronoi diagram of sites on a triangle-mesh surface under a metric given by a model
+/// of `SurfaceVoronoiMetric` (typically a `SurfaceVoronoiEmbedding` such as
+/// `CGAL::Biharmonic_embedding`). The diagram is computed once at construction and then
+/// answers queries; outputs (the arrangement, labels) read it.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam Metric a model of `SurfaceVoronoiMetric`
+/// \tparam VertexPointMap a readable property map from vertices to 3D points
+template <class TriangleMesh,
+          class Metric = Biharmonic_embedding<TriangleMesh>,
+          class VertexPointMap = Default>
+class Surface_voronoi_diagram
+{
+public:
+  typedef TriangleMesh Triangle_mesh;
+  typedef Metric Metric_type;
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  typedef typename Default::Get<VertexPointMap,
+            typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  typedef Surface_voronoi::internal::Partition Partition;
+
+  /// the index returned where no site reaches
+  static constexpr std::size_t no_site = std::size_t(-1);
+
+  /// Computes the diagram.
+  /// \param tm the surface; it must stay alive and unchanged while the diagram is used
+  /// \param metric the metric, built on `tm` (lazy metrics are told the sites and queried)
+  /// \param sites a range of `vertex_descriptor`, `Face_location` or `Point_3` (a point is
+  ///        moved to the nearest surface point)
+  /// \param options weights, candidate selection, repair
+  /// \param np optional `vertex_point_map`, and `edge_is_constrained_map` (breaklines: a
+  ///        readable map edge -> bool; no cell crosses a constrained edge)
+  /// \pre `tm` is a triangle mesh without degenerate faces; sites are distinct surface points
+  /// \throws Surface_voronoi::Input_error for bad input, with a message naming the element
+  template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Surface_voronoi_diagram(const TriangleMesh& tm,
+                          Metric& metric,
+                          const SiteRange& sites,
+                          const Surface_voronoi::Diagram_options& options = Surface_voronoi::Diagram_options(),
+                          const NamedParameters& np = CGAL::parameters::default_values())
+    : m_tm(&tm), m_options(options)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+    m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_const_property_map(CGAL::vertex_point, tm));
+    m_mesh.build(tm, m_vpm);
+    check_manifold_vertices();
+
+    // breaklines
+    m_blocked_edge.assign(m_mesh.number_of_edges(), 0);
+    if(!is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+    {
+      auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                  CGAL::Constant_property_map<typename Graph_traits::edge_descriptor, bool>(false));
+      for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+      {
+        auto h = halfedge(m_mesh.face_handles[f], tm);
+        for(int k = 0; k < 3; ++k, h = next(h, tm))
+          if(get(ecm, edge(h, tm))) m_blocked_edge[m_mesh.edges[f][k]] = 1;
+      }
+    }
+
+    // sites
+    Surface_voronoi::internal::Site_locator<TriangleMesh, Vertex_point_map> locator(tm, m_vpm, m_mesh, options.max_site_distance);
+    for(const auto& s : sites)
+      m_sites.push_back(locator.locate(s, m_sites.size()));
+    if(m_sites.empty())
+      throw Surface_voronoi::Input_error("there are no sites");
+    if(m_sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+      throw Surface_voronoi::Input_error("too many sites");
+    if(!options.weights.empty())
+    {
+      if(options.weights.size() != m_sites.size())
+        throw Surface_voronoi::Input_error("there are " + std::to_string(options.weights.size()) + " weights for "
+                                           + std::to_string(m_sites.size()) + " sites");
+      for(std::size_t i = 0; i < m_sites.size(); ++i)
+      {
+        if(!std::isfinite(options.weights[i]))
+          throw Surface_voronoi::Input_error("the weight of site " + std::to_string(i) + " is not finite");
+        m_sites[i].weight = options.weights[i];
+      }
+    }
+    Surface_voronoi::internal::check_distinct_sites(m_mesh, m_sites);
+
+    m_fields.reset(new Fields(m_mesh, metric, m_sites, tm));
+    compute();
+  }
+
+  // The diagram refers to its own members internally: neither copied nor moved.
+  Surface_voronoi_diagram(const Surface_voronoi_diagram&) = delete;
+  Surface_voronoi_diagram& operator=(const Surface_voronoi_diagram&) = delete;
+
+  /// \name Sites
+  /// @{
+  std::size_t number_of_sites() const { return m_sites.size(); }
+  Face_location site_location(std::size_t i) const
+  {
+    return Face_location(m_mesh.face_handles[m_sites[i].face], m_sites[i].barycentric);
+  }
+  Point_3 site_point(std::size_t i) const
+  {
+    const std::array<double, 3> p = m_mesh.point_at(m_sites[i].face, m_sites[i].barycentric);
+    return Point_3(p[0], p[1], p[2]);
+  }
+  double site_weight(std::size_t i) const { return m_sites[i].weight; }
+  /// @}
+
+  /// \name Queries
+  /// @{
+  /// the site whose cell contains the point; ties go to the lower site index; `no_site`
+  /// where no site reaches
+  std::size_t site_of(const Face_location& l) const
+  {
+    const std::size_t f = get(m_mesh.face_index, l.first);
+    std::size_t best = no_site;
+    double best_value = 0;
+    for(const auto& x : m_candidates[f])
+    {
+      const double v = l.second[0] * x.value[0] + l.second[1] * x.value[1] + l.second[2] * x.value[2];
+      if(best == no_site || v < best_value || (v == best_value && x.site < best))
+      {
+        best = x.site;
+        best_value = v;
+      }
+    }
+    return best;
+  }
+
+  /// the site owning vertex `v` of the input mesh (ties to the lower index)
+  std::size_t site_of(vertex_descriptor v) const
+  {
+    return m_vertex_site[get(m_mesh.vertex_index, v)];
+  }
+
+  /// the area of the cell of site `i`
+  double cell_area(std::size_t i) const { return m_cell_area[i]; }
+  /// the number of connected pieces of the cell of site `i` (1 for a good cell, 0 if empty)
+  std::size_t number_of_pieces(std::size_t i) const { return m_cell_pieces[i]; }
+  /// the sites whose cells share a boundary segment with the cell of `i`, ascending
+  const std::vector<std::size_t>& neighbors(std::size_t i) const { return m_neighbors[i]; }
+  /// the area no site reaches (components without sites, regions closed off by breaklines)
+  double unreached_area() const { return m_stats.unreached_area; }
+  std::size_t number_of_unreached_faces() const { return m_stats.unreached_faces; }
+  /// the area of the whole surface
+  double surface_area() const { return m_mesh.total_area; }
+  const Surface_voronoi::Diagram_statistics& statistics() const { return m_stats; }
+  /// @}
+
+  /// \name Access for outputs
+  /// @{
+  const TriangleMesh& triangle_mesh() const { return *m_tm; }
+  Vertex_point_map vertex_point_map() const { return m_vpm; }
+  /// the partition: convex pieces, one site each, grouped by face; see `Partition`
+  const Partition& partition() const { return m_partition; }
+  face_descriptor face_handle(std::size_t face_index) const { return m_mesh.face_handles[face_index]; }
+  std::size_t face_index(face_descriptor f) const { return get(m_mesh.face_index, f); }
+  std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
+  /// the candidate sites kept for face `f` (ascending), after propagation and repair
+  std::vector<std::size_t> candidates(face_descriptor f) const
+  {
+    std::vector<std::size_t> r;
+    for(const auto& x : m_candidates[get(m_mesh.face_index, f)]) r.push_back(x.site);
+    return r;
+  }
+  /// @}
+
+private:
+  typedef Surface_voronoi::internal::Site_fields<TriangleMesh, Metric> Fields;
+
+  void check_manifold_vertices() const
+  {
+    // The corners around a vertex must form one fan: union the corners of adjacent faces.
+    const std::size_t nf = m_mesh.number_of_faces();
+    std::vector<std::size_t> parent(3 * nf);
+    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](std::size_t x) {
+      while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
+      return x;
+    };
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t g = m_mesh.neighbors[f][k];
+        if(g == Surface_voronoi::internal::Indexed_mesh<TriangleMesh>::none) continue;
+        // local edge k joins corners k and k+1; the same vertices are corners of g
+        for(int c : { k, (k + 1) % 3 })
+          for(int l = 0; l < 3; ++l)
+            if(m_mesh.triangles[g][l] == m_mesh.triangles[f][c])
+            {
+              const std::size_t a = find(3 * f + c), b = find(3 * g + l);
+              if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+            }
+      }
+    std::vector<std::size_t> fan(m_mesh.number_of_vertices(), std::size_t(-1));
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t v = m_mesh.triangles[f][k];
+        const std::size_t r = find(3 * f + k);
+        if(fan[v] == std::size_t(-1)) fan[v] = r;
+        else if(fan[v] != r)
+          throw Surface_voronoi::Input_error("vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans");
+      }
+  }
+
+  bool blocked(std::size_t f, int k) const { return m_blocked_edge[m_mesh.edges[f][k]] != 0; }
+
+  void compute()
+  {
+    typedef std::chrono::steady_clock Clock;
+    const std::size_t n = m_sites.size();
+    std::vector<std::size_t> site_faces(n);
+    for(std::size_t i = 0; i < n; ++i) site_faces[i] = m_sites[i].face;
+    std::unordered_set<std::uint64_t> banned;
+    const std::uint64_t nf = m_mesh.number_of_faces();
+    auto is_banned = [&](std::size_t site, std::size_t f) {
+      return !banned.empty() && banned.count(std::uint64_t(site) * nf + f) != 0;
+    };
+    auto is_blocked = [&](std::size_t f, int k) { return blocked(f, k); };
+    auto blocked_edge = [&](std::size_t e) { return m_blocked_edge[e] != 0; };
+    const bool rvd = (m_options.candidates == Surface_voronoi::Candidate_selection::GLOBAL_NEAREST);
+
+    m_stats = Surface_voronoi::Diagram_statistics();
+    m_stats.sites = n;
+    m_stats.surface_area = m_mesh.total_area;
+    Surface_voronoi::internal::Cell_components cc;
+    for(std::size_t round = 0;; ++round)
+    {
+      auto t0 = Clock::now();
+      Surface_voronoi::internal::Propagation_statistics ps;
+      if(rvd)
+      {
+        if constexpr(Fields::is_exact())
+          Surface_voronoi::internal::global_nearest_candidates(m_mesh, *m_fields, n, !m_options.weights.empty(), m_candidates);
+        else
+          throw Surface_voronoi::Input_error("the restricted Voronoi diagram baseline needs an embedding metric");
+      }
+      else
+        Surface_voronoi::internal::propagate(m_mesh, *m_fields, site_faces, is_blocked, is_banned, m_candidates, ps);
+      auto t1 = Clock::now();
+      std::vector<Surface_voronoi::internal::Face_cut> cuts(m_mesh.number_of_faces());
+      for(std::size_t f = 0; f < cuts.size(); ++f)
+        if(!m_candidates[f].empty())
+          cuts[f] = Surface_voronoi::internal::Face_cutter(m_candidates[f]).cut();
+      Surface_voronoi::internal::stitch(m_mesh, m_candidates, cuts, m_partition);
+      auto t2 = Clock::now();
+      cc = Surface_voronoi::internal::cell_components(m_mesh, m_partition, n, blocked_edge);
+      auto t3 = Clock::now();
+
+      const double dp = std::chrono::duration<double>(t1 - t0).count();
+      const double dc = std::chrono::duration<double>(t2 - t1).count();
+      const double dr = std::chrono::duration<double>(t3 - t2).count();
+      if(round == 0)
+      {
+        m_stats.propagation_seconds = dp;
+        m_stats.cutting_seconds = dc;
+        m_stats.repair_seconds = dr;
+        m_stats.propagation_events = ps.events;
+        m_stats.admitted_fields = ps.admitted;
+      }
+      else
+        m_stats.repair_seconds += dp + dc + dr;
+
+      // orphans: every component but the principal one of each site
+      std::size_t broken = 0;
+      std::vector<std::size_t> orphan_components;
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const std::vector<std::size_t>& comps = cc.site_components[i];
+        if(comps.size() <= 1) continue;
+        ++broken;
+        const std::size_t principal = principal_component(i, cc);
+        for(std::size_t c : comps)
+          if(c != principal) orphan_components.push_back(c);
+      }
+      if(round == 0) m_stats.broken_cells_before_repair = broken;
+      m_stats.broken_cells = broken;
+      if(broken == 0 || rvd || !m_options.repair || round >= m_options.max_repair_rounds)
+        break;
+      std::vector<std::uint8_t> is_orphan(cc.component_site.size(), 0);
+      for(std::size_t c : orphan_components) is_orphan[c] = 1;
+      for(std::size_t p = 0; p < m_partition.pieces.size(); ++p)
+        if(is_orphan[cc.piece_component[p]])
+        {
+          const auto& piece = m_partition.pieces[p];
+          banned.insert(std::uint64_t(piece.site) * nf + piece.face);
+        }
+      m_stats.repair_rounds = round + 1;
+      m_stats.banned_fields = banned.size();
+    }
+    auto t4 = Clock::now();
+    summarize(cc);
+    m_stats.repair_seconds += std::chrono::duration<double>(Clock::now() - t4).count();
+  }
+
+  // The component holding the site's own location; with weights a site may not own its
+  // location, and then its largest component is kept.
+  std::size_t principal_component(std::size_t i, const Surface_voronoi::internal::Cell_components& cc) const
+  {
+    const std::size_t f = m_sites[i].face;
+    for(std::size_t p = m_partition.face_begin[f]; p < m_partition.face_begin[f + 1]; ++p)
+      if(m_partition.pieces[p].site == i) return cc.piece_component[p];
+    std::size_t best = cc.site_components[i].front();
+    for(std::size_t c : cc.site_components[i])
+      if(cc.component_area[c] > cc.component_area[best]) best = c;
+    return best;
+  }
+
+  void summarize(const Surface_voronoi::internal::Cell_components& cc)
+  {
+    const std::size_t n = m_sites.size();
+    m_cell_area.assign(n, 0.);
+    m_cell_pieces.assign(n, 0);
+    for(const auto& p : m_partition.pieces)
+    {
+      if(p.site == no_site) m_stats.unreached_area += p.area;
+      else m_cell_area[p.site] += p.area;
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      m_cell_pieces[i] = cc.site_components[i].size();
+      if(m_cell_pieces[i] == 0) ++m_stats.empty_cells;
+      else ++m_stats.cells;
+      m_stats.pieces += m_cell_pieces[i];
+    }
+    std::vector<std::uint8_t> unreached_component(m_mesh.number_of_components, 0);
+    std::size_t total_candidates = 0;
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      total_candidates += m_candidates[f].size();
+      m_stats.max_candidates_per_face = (std::max)(m_stats.max_candidates_per_face, m_candidates[f].size());
+      if(m_candidates[f].empty())
+      {
+        ++m_stats.unreached_faces;
+        unreached_component[m_mesh.face_component[f]] = 1;
+      }
+    }
+    for(auto u : unreached_component) m_stats.unreached_components += u;
+    m_stats.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
+    m_stats.welded_vertices = m_partition.welded_vertices;
+    m_stats.inserted_vertices = m_partition.inserted_vertices;
+
+    // vertex owners
+    m_vertex_site.assign(m_mesh.number_of_vertices(), no_site);
+    std::vector<double> best(m_mesh.number_of_vertices(), 0.);
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+      for(const auto& x : m_candidates[f])
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t v = m_mesh.triangles[f][k];
+          if(m_vertex_site[v] == no_site || x.value[k] < best[v] || (x.value[k] == best[v] && x.site < m_vertex_site[v]))
+          {
+            m_vertex_site[v] = x.site;
+            best[v] = x.value[k];
+          }
+        }
+
+    // neighbours: sites on both sides of a piece edge
+    std::vector<std::set<std::size_t> > adj(n);
+    std::unordered_map<std::uint64_t, std::size_t> first;
+    const std::uint64_t nv = m_partition.vertices.size();
+    for(std::size_t p = 0; p < m_partition.pieces.size(); ++p)
+    {
+      const auto& piece = m_partition.pieces[p];
+      const std::size_t m = piece.vertices.size();
+      for(std::size_t k = 0; k < m; ++k)
+      {
+        std::uint64_t u = piece.vertices[k], w = piece.vertices[(k + 1) % m];
+        if(u > w) std::swap(u, w);
+        auto r = first.emplace(u * nv + w, p);
+        if(r.second) continue;
+        const std::size_t a = m_partition.pieces[r.first->second].site, b = piece.site;
+        if(a != b && a != no_site && b != no_site) { adj[a].insert(b); adj[b].insert(a); }
+      }
+    }
+    m_neighbors.assign(n, std::vector<std::size_t>());
+    for(std::size_t i = 0; i < n; ++i) m_neighbors[i].assign(adj[i].begin(), adj[i].end());
+  }
+
+  const TriangleMesh* m_tm;
+  Surface_voronoi::Diagram_options m_options;
+  Vertex_point_map m_vpm;
+  Surface_voronoi::internal::Indexed_mesh<TriangleMesh> m_mesh;
+  std::vector<std::uint8_t> m_blocked_edge;
+  std::vector<Surface_voronoi::internal::Site> m_sites;
+  std::unique_ptr<Fields> m_fields;
+  std::vector<std::vector<Surface_voronoi::internal::Face_field> > m_candidates;
+  Partition m_partition;
+  std::vector<double> m_cell_area;
+  std::vector<std::size_t> m_cell_pieces;
+  std::vector<std::size_t> m_vertex_site;
+  std::vector<std::vector<std::size_t> > m_neighbors;
+  Surface_voronoi::Diagram_statistics m_stats;
+};
+
+} // namespace CGAL
+
+#include <CGAL/Surface_voronoi_diagram/arrangement.h>
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_H

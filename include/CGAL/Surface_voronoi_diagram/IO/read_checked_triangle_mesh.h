@@ -1,0 +1,812 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reading of input meshes for the command-line program and the library.
+//
+// A mesh is read as a polygon soup rather than directly into a halfedge data
+// structure, because a halfedge structure cannot even represent most defects
+// (non-manifold edges, dangling indices), so the builders either fail silently
+// or abort. On the soup every defect can be detected and reported with the
+// index of the offending vertex or face as it appears in the file.
+//
+// Contract (relied upon by outside checks of the program):
+//  - vertex index = order of the vertex in the file, 0-based (for STL, which has
+//    no shared vertices, the order of first appearance of each distinct point);
+//  - face index = order of the polygon in the file, 0-based;
+//  - polygons with more than 3 vertices are triangulated;
+//  - a non-finite coordinate, a zero-area face, a non-manifold edge or vertex,
+//    a non-orientable surface or an empty mesh is an error naming the element;
+//  - inconsistently oriented faces are re-oriented, not rejected;
+//  - points used by no face are dropped (and counted), not rejected.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace IO {
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// What happened while a mesh was read and turned into a triangle mesh, for the
+/// caller to log: none of these is an error.
+struct Mesh_reading_report
+{
+  /// points in the input, including the isolated ones
+  std::size_t number_of_points = 0;
+  /// polygons in the input
+  std::size_t number_of_polygons = 0;
+  /// triangles of the built mesh
+  std::size_t number_of_triangles = 0;
+  /// input polygons with more than 3 vertices, which were triangulated
+  std::size_t polygons_triangulated = 0;
+  /// whether some faces had to be flipped to orient the surface consistently
+  bool reoriented = false;
+  /// input points used by no polygon, left out of the built mesh
+  std::size_t isolated_points = 0;
+};
+
+namespace internal {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Checking_kernel;
+
+inline std::string non_finite_name(double v)
+{
+  if(std::isnan(v))
+    return "nan";
+  return v > 0 ? "inf" : "-inf";
+}
+
+// Predicates are evaluated on the double approximation of the coordinates with
+// an exact kernel, so a face is zero-area exactly when its stored coordinates
+// are collinear: a tolerance would make the answer depend on the mesh scale.
+template <class Point_3>
+Checking_kernel::Point_3 to_checking_point(const Point_3& p)
+{
+  return Checking_kernel::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                  CGAL::to_double(p.z()));
+}
+
+template <class Point_3>
+bool is_finite_point(const Point_3& p, double& bad_value)
+{
+  const double c[3] = { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) };
+  for(double v : c)
+  {
+    if(!std::isfinite(v))
+    {
+      bad_value = v;
+      return false;
+    }
+  }
+  return true;
+}
+
+// A polygon has zero area when all its corners lie on one line (or one point).
+template <class Point_3, class Polygon>
+bool has_all_corners_collinear(const std::vector<Point_3>& points, const Polygon& polygon)
+{
+  const std::size_t n = polygon.size();
+  const Checking_kernel::Point_3 p0 = to_checking_point(points[polygon[0]]);
+  std::size_t k = 1;
+  Checking_kernel::Point_3 pk;
+  for(; k < n; ++k)
+  {
+    pk = to_checking_point(points[polygon[k]]);
+    if(pk != p0)
+      break;
+  }
+  if(k == n)
+    return true;
+  for(std::size_t j = k + 1; j < n; ++j)
+    if(!CGAL::collinear(p0, pk, to_checking_point(points[polygon[j]])))
+      return false;
+  return true;
+}
+
+class Union_find
+{
+public:
+  explicit Union_find(std::size_t n) : parent_(n)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      parent_[i] = i;
+  }
+
+  std::size_t find(std::size_t i)
+  {
+    while(parent_[i] != i)
+    {
+      parent_[i] = parent_[parent_[i]]; // path halving keeps trees shallow without recursion
+      i = parent_[i];
+    }
+    return i;
+  }
+
+  void unite(std::size_t a, std::size_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if(a != b)
+      parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+private:
+  std::vector<std::size_t> parent_;
+};
+
+// One side of an edge as seen from one polygon. Sorting these by (lo, hi, face)
+// groups the polygons around each undirected edge in a deterministic order,
+// which keeps error messages reproducible, without any hashing.
+struct Soup_half_edge
+{
+  std::size_t lo, hi, face;
+  std::size_t corner_lo, corner_hi; // the polygon's corners at lo and at hi
+  bool forward;                     // the polygon walks the edge from lo to hi
+};
+
+struct Face_link
+{
+  std::size_t face_a, face_b, lo, hi;
+  bool same_direction;
+};
+
+// Names faces in messages: the triangles made from a polygon report the index
+// of that polygon, since it is the only face index the user knows.
+class Face_namer
+{
+public:
+  Face_namer(const std::vector<std::size_t>* ids, const std::string& context)
+    : ids_(ids), context_(context)
+  {}
+  std::size_t operator()(std::size_t f) const { return ids_ == nullptr ? f : (*ids_)[f]; }
+  const std::string& context() const { return context_; }
+
+private:
+  const std::vector<std::size_t>* ids_;
+  std::string context_;
+};
+
+// Checks what depends only on the indices: every edge has at most two faces,
+// the faces around every vertex form one fan, and the surface is orientable.
+// Returns whether the faces are already consistently oriented.
+template <class PolygonRange>
+bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
+{
+  std::vector<std::size_t> corner_offset(polygons.size() + 1, 0);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
+  const std::size_t number_of_corners = corner_offset.back();
+
+  std::vector<Soup_half_edge> half_edges;
+  half_edges.reserve(number_of_corners);
+  std::vector<std::size_t> corner_vertex(number_of_corners);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const std::size_t m = polygons[f].size();
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      const std::size_t u = polygons[f][j], w = polygons[f][(j + 1) % m];
+      const std::size_t cu = corner_offset[f] + j, cw = corner_offset[f] + (j + 1) % m;
+      corner_vertex[cu] = u;
+      if(u < w)
+        half_edges.push_back(Soup_half_edge{ u, w, f, cu, cw, true });
+      else
+        half_edges.push_back(Soup_half_edge{ w, u, f, cw, cu, false });
+    }
+  }
+  std::sort(half_edges.begin(), half_edges.end(),
+            [](const Soup_half_edge& a, const Soup_half_edge& b) {
+              return std::tie(a.lo, a.hi, a.face) < std::tie(b.lo, b.hi, b.face);
+            });
+
+  // Corners of the same vertex are glued across every edge shared by exactly
+  // two faces; the connected classes of corners of a vertex are its fans.
+  Union_find corners(number_of_corners);
+  std::vector<Face_link> links;
+  bool consistently_oriented = true;
+  for(std::size_t begin = 0; begin < half_edges.size();)
+  {
+    std::size_t end = begin + 1;
+    while(end < half_edges.size() && half_edges[end].lo == half_edges[begin].lo &&
+          half_edges[end].hi == half_edges[begin].hi)
+      ++end;
+    const std::size_t count = end - begin;
+    if(count > 2)
+    {
+      std::ostringstream msg;
+      msg << "edge (" << half_edges[begin].lo << ", " << half_edges[begin].hi
+          << ") is non-manifold: shared by " << count << " faces (";
+      for(std::size_t i = begin; i < end; ++i)
+        msg << (i == begin ? "" : ", ") << name(half_edges[i].face);
+      msg << ")" << name.context();
+      throw Input_error(msg.str());
+    }
+    if(count == 2)
+    {
+      const Soup_half_edge& a = half_edges[begin];
+      const Soup_half_edge& b = half_edges[begin + 1];
+      corners.unite(a.corner_lo, b.corner_lo);
+      corners.unite(a.corner_hi, b.corner_hi);
+      links.push_back(Face_link{ a.face, b.face, a.lo, a.hi, a.forward == b.forward });
+      if(a.forward == b.forward)
+        consistently_oriented = false;
+    }
+    begin = end;
+  }
+
+  std::vector<std::pair<std::size_t, std::size_t>> vertex_fan(number_of_corners);
+  for(std::size_t c = 0; c < number_of_corners; ++c)
+    vertex_fan[c] = std::make_pair(corner_vertex[c], corners.find(c));
+  std::sort(vertex_fan.begin(), vertex_fan.end());
+  vertex_fan.erase(std::unique(vertex_fan.begin(), vertex_fan.end()), vertex_fan.end());
+  for(std::size_t begin = 0; begin < vertex_fan.size();)
+  {
+    std::size_t end = begin + 1;
+    while(end < vertex_fan.size() && vertex_fan[end].first == vertex_fan[begin].first)
+      ++end;
+    if(end - begin > 1)
+    {
+      std::ostringstream msg;
+      msg << "vertex " << vertex_fan[begin].first << " is non-manifold: its faces form "
+          << (end - begin) << " separate fans" << name.context();
+      throw Input_error(msg.str());
+    }
+    begin = end;
+  }
+
+  // Two-colouring of the face adjacency graph: a face keeps (0) or flips (1)
+  // its orientation; a contradiction means no orientation exists at all.
+  std::vector<std::size_t> link_offset(polygons.size() + 1, 0);
+  for(const Face_link& l : links)
+  {
+    ++link_offset[l.face_a + 1];
+    ++link_offset[l.face_b + 1];
+  }
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    link_offset[f + 1] += link_offset[f];
+  std::vector<std::size_t> adjacency(link_offset.back());
+  {
+    std::vector<std::size_t> fill(link_offset.begin(), link_offset.end() - 1);
+    for(std::size_t i = 0; i < links.size(); ++i)
+    {
+      adjacency[fill[links[i].face_a]++] = i;
+      adjacency[fill[links[i].face_b]++] = i;
+    }
+  }
+  std::vector<signed char> flip(polygons.size(), -1);
+  std::vector<std::size_t> queue;
+  for(std::size_t seed = 0; seed < polygons.size(); ++seed)
+  {
+    if(flip[seed] != -1)
+      continue;
+    flip[seed] = 0;
+    queue.assign(1, seed);
+    while(!queue.empty())
+    {
+      const std::size_t f = queue.back();
+      queue.pop_back();
+      for(std::size_t k = link_offset[f]; k < link_offset[f + 1]; ++k)
+      {
+        const Face_link& l = links[adjacency[k]];
+        const std::size_t g = (l.face_a == f) ? l.face_b : l.face_a;
+        const signed char wanted = static_cast<signed char>(flip[f] ^ (l.same_direction ? 1 : 0));
+        if(flip[g] == -1)
+        {
+          flip[g] = wanted;
+          queue.push_back(g);
+        }
+        else if(flip[g] != wanted)
+        {
+          std::ostringstream msg;
+          msg << "the mesh is not orientable (like a Moebius strip): faces "
+              << name(std::min(f, g)) << " and " << name(std::max(f, g))
+              << " cannot be oriented consistently across edge (" << l.lo << ", " << l.hi << ")"
+              << name.context();
+          throw Input_error(msg.str());
+        }
+      }
+    }
+  }
+  return consistently_oriented;
+}
+
+// Checks of single elements: coordinates, then each face on its own.
+template <class Point_3>
+void check_soup_elements(const std::vector<Point_3>& points,
+                         const std::vector<std::vector<std::size_t>>& polygons)
+{
+  if(polygons.empty())
+    throw Input_error("the mesh is empty (no faces)");
+
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    double bad = 0;
+    if(!is_finite_point(points[i], bad))
+      throw Input_error("vertex " + std::to_string(i) + " has a non-finite coordinate (" +
+                        non_finite_name(bad) + ")");
+  }
+
+  std::vector<std::size_t> sorted;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const std::vector<std::size_t>& polygon = polygons[f];
+    const std::string face = "face " + std::to_string(f);
+    if(polygon.size() < 3)
+      throw Input_error(face + " has fewer than 3 vertices");
+    for(std::size_t v : polygon)
+      if(v >= points.size())
+        throw Input_error(face + " references vertex " + std::to_string(v) + " but the mesh has " +
+                          std::to_string(points.size()) + " vertices");
+    sorted.assign(polygon.begin(), polygon.end());
+    std::sort(sorted.begin(), sorted.end());
+    const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+    if(repeated != sorted.end())
+      throw Input_error(face + " repeats vertex " + std::to_string(*repeated));
+    if(has_all_corners_collinear(points, polygon))
+      throw Input_error(face + " has zero area");
+  }
+}
+
+// Ear clipping in a coordinate plane. The polygon is projected along the axis
+// closest to its Newell normal (dropping that coordinate), which maps a planar
+// polygon onto a simple polygon of the same orientation as the best-fit plane
+// does, but keeps the coordinates exact, so the 2D orientation predicates are
+// exact and non-convex corners are never mistaken for ears.
+// Returns false when no ear can be found, i.e. the polygon is not simple in
+// that projection (self-intersecting, or too warped).
+template <class Point_3>
+bool triangulate_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                         std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  typedef Checking_kernel::Point_2 Point_2;
+  const std::size_t n = polygon.size();
+
+  double normal[3] = { 0, 0, 0 };
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const Checking_kernel::Point_3 a = to_checking_point(points[polygon[j]]);
+    const Checking_kernel::Point_3 b = to_checking_point(points[polygon[(j + 1) % n]]);
+    normal[0] += (a.y() - b.y()) * (a.z() + b.z());
+    normal[1] += (a.z() - b.z()) * (a.x() + b.x());
+    normal[2] += (a.x() - b.x()) * (a.y() + b.y());
+  }
+  int axis = 0;
+  for(int k = 1; k < 3; ++k)
+    if(std::abs(normal[k]) > std::abs(normal[axis]))
+      axis = k;
+  if(!(std::abs(normal[axis]) > 0))
+    return false;
+  // Cyclic order of the kept axes, so that counterclockwise in 2D means
+  // along +axis in 3D.
+  const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+  const CGAL::Orientation convex = normal[axis] > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  const CGAL::Orientation concave = normal[axis] > 0 ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+
+  const std::vector<std::size_t>& ring = polygon;
+  std::vector<Point_2> q(n);
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const Checking_kernel::Point_3 p = to_checking_point(points[polygon[j]]);
+    q[j] = Point_2(p[u_axis], p[v_axis]);
+  }
+
+  auto is_ear = [&](std::size_t a, std::size_t b, std::size_t c) {
+    if(CGAL::orientation(q[a], q[b], q[c]) != convex)
+      return false;
+    for(std::size_t j = 0; j < q.size(); ++j)
+    {
+      if(j == a || j == b || j == c)
+        continue;
+      // A copy of a corner touches the ear without entering it (polygons
+      // touching themselves at a point).
+      if(q[j] == q[a] || q[j] == q[b] || q[j] == q[c])
+        continue;
+      if(CGAL::orientation(q[a], q[b], q[j]) != concave &&
+         CGAL::orientation(q[b], q[c], q[j]) != concave &&
+         CGAL::orientation(q[c], q[a], q[j]) != concave)
+        return false;
+    }
+    return true;
+  };
+
+  std::vector<std::size_t> live(n); // positions in q of the vertices still in the ring
+  for(std::size_t j = 0; j < n; ++j)
+    live[j] = j;
+
+  std::size_t i = 0, misses = 0;
+  while(live.size() > 4)
+  {
+    const std::size_t m = live.size();
+    const std::size_t prev = (i + m - 1) % m, next = (i + 1) % m;
+    if(is_ear(live[prev], live[i], live[next]))
+    {
+      triangles.push_back({ ring[live[prev]], ring[live[i]], ring[live[next]] });
+      live.erase(live.begin() + static_cast<std::ptrdiff_t>(i));
+      if(i == live.size())
+        i = 0;
+      misses = 0;
+    }
+    else
+    {
+      i = next;
+      if(++misses > m)
+        return false;
+    }
+  }
+  if(live.size() == 4)
+  {
+    // Of the two diagonals, the shorter one gives the better-shaped triangles.
+    const bool ear0 = is_ear(live[3], live[0], live[1]); // diagonal (1, 3)
+    const bool ear1 = is_ear(live[0], live[1], live[2]); // diagonal (0, 2)
+    if(!ear0 && !ear1)
+      return false;
+    bool use_13 = ear0;
+    if(ear0 && ear1)
+    {
+      const auto p = [&](std::size_t k) { return to_checking_point(points[ring[live[k]]]); };
+      use_13 = CGAL::squared_distance(p(1), p(3)) <= CGAL::squared_distance(p(0), p(2));
+    }
+    const std::size_t* r = live.data();
+    if(use_13)
+    {
+      triangles.push_back({ ring[r[3]], ring[r[0]], ring[r[1]] });
+      triangles.push_back({ ring[r[1]], ring[r[2]], ring[r[3]] });
+    }
+    else
+    {
+      triangles.push_back({ ring[r[0]], ring[r[1]], ring[r[2]] });
+      triangles.push_back({ ring[r[2]], ring[r[3]], ring[r[0]] });
+    }
+  }
+  else
+    triangles.push_back({ ring[live[0]], ring[live[1]], ring[live[2]] });
+  return true;
+}
+
+inline std::string lower_case_extension(const std::string& filename)
+{
+  const std::size_t dot = filename.find_last_of('.');
+  const std::size_t slash = filename.find_last_of("/\\");
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string ext = filename.substr(dot + 1);
+  for(char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+template <class TriangleMesh>
+struct Mesh_point
+{
+  typedef typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type Map;
+  typedef typename boost::property_traits<Map>::value_type type;
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Checks that a polygon soup describes a manifold, orientable surface with
+/// finite coordinates and no zero-area face. Faces need not be consistently
+/// oriented (an edge walked twice in the same direction is not an error).
+/// Points used by no polygon are allowed (but must have finite coordinates).
+///
+/// Errors name vertices and faces by their index in `points` and `polygons`.
+/// The checks run in this order, and the first failure is reported: no face;
+/// a non-finite coordinate; for each face in order, fewer than 3 vertices, an
+/// out-of-range index, a repeated vertex, all corners collinear (exact
+/// predicate); an edge shared by more than 2 faces; a vertex whose faces,
+/// linked through the edges incident to it, form more than one fan; a
+/// non-orientable surface.
+///
+/// \tparam Point_3 a point type with `x()`, `y()`, `z()` accepted by `CGAL::to_double()`
+/// \param points the points of the soup
+/// \param polygons each polygon as the indices of its corners in `points`
+/// \throws CGAL::Surface_voronoi::Input_error with a one-line message naming the
+///         offending element, e.g. `edge (4, 9) is non-manifold: shared by 3 faces (1, 5, 8)`
+template <class Point_3>
+void check_polygon_soup(const std::vector<Point_3>& points,
+                        const std::vector<std::vector<std::size_t>>& polygons)
+{
+  internal::check_soup_elements(points, polygons);
+  internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Builds a triangle mesh from a polygon soup held in memory, after checking it
+/// with `check_polygon_soup()`.
+///
+/// Polygons with more than 3 vertices are triangulated by ear clipping in a
+/// projection onto the coordinate plane closest to the polygon's plane, which
+/// is correct for simple planar polygons, convex or not (and for mildly warped
+/// ones). Faces are re-oriented consistently with
+/// `CGAL::Polygon_mesh_processing::orient_polygon_soup()` when needed. Points
+/// used by no polygon are left out of `mesh`, but errors still use the indices
+/// of `points`; errors about a triangle made from a polygon name the polygon.
+///
+/// \tparam Point_3 a point type convertible to the point type of `TriangleMesh`
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal
+///         `CGAL::vertex_point_t` property map, e.g. `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`
+/// \param points the points of the soup
+/// \param polygons each polygon as the indices of its corners in `points`
+/// \param mesh the output; cleared first, and left untouched if an error is thrown
+/// \pre nothing: any defect of the soup is reported by an exception
+/// \throws CGAL::Surface_voronoi::Input_error as `check_polygon_soup()`, and when a
+///         polygon cannot be triangulated or yields a zero-area triangle
+/// \returns what was done to the soup (triangulation, re-orientation, isolated points)
+template <class Point_3, class TriangleMesh>
+Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& points,
+                                                const std::vector<std::vector<std::size_t>>& polygons,
+                                                TriangleMesh& mesh)
+{
+  internal::check_soup_elements(points, polygons);
+  bool consistently_oriented =
+      internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
+
+  Mesh_reading_report report;
+  report.number_of_points = points.size();
+  report.number_of_polygons = polygons.size();
+
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::size_t> triangle_face; // index of the polygon each triangle comes from
+  triangles.reserve(polygons.size());
+  triangle_face.reserve(polygons.size());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const std::vector<std::size_t>& polygon = polygons[f];
+    if(polygon.size() == 3)
+    {
+      triangles.push_back({ polygon[0], polygon[1], polygon[2] });
+      triangle_face.push_back(f);
+      continue;
+    }
+    ++report.polygons_triangulated;
+    const std::size_t first = triangles.size();
+    if(!internal::triangulate_polygon(points, polygon, triangles))
+      throw Input_error("face " + std::to_string(f) +
+                        " cannot be triangulated: it is not a simple planar polygon");
+    for(std::size_t t = first; t < triangles.size(); ++t)
+    {
+      const std::array<std::size_t, 3>& tri = triangles[t];
+      if(CGAL::collinear(internal::to_checking_point(points[tri[0]]),
+                         internal::to_checking_point(points[tri[1]]),
+                         internal::to_checking_point(points[tri[2]])))
+        throw Input_error("face " + std::to_string(f) +
+                          " has a zero-area triangle after triangulation (vertices " +
+                          std::to_string(tri[0]) + ", " + std::to_string(tri[1]) + ", " +
+                          std::to_string(tri[2]) + ")");
+      triangle_face.push_back(f);
+    }
+  }
+
+  if(report.polygons_triangulated > 0)
+  {
+    // A diagonal may coincide with an edge elsewhere in the soup, so the
+    // triangle soup can be non-manifold even when the polygons were not.
+    consistently_oriented = internal::check_soup_topology(
+        triangles, internal::Face_namer(&triangle_face, " after triangulating polygons"));
+  }
+
+  std::vector<Point_3> kept_points(points);
+  if(!consistently_oriented)
+  {
+    // The soup was checked orientable and manifold, so the orienter has no
+    // reason to duplicate points; if it does, our checks missed a case.
+    if(!CGAL::Polygon_mesh_processing::orient_polygon_soup(kept_points, triangles))
+      throw Input_error("the mesh cannot be oriented consistently (it is not an orientable manifold surface)");
+    report.reoriented = true;
+  }
+
+  std::vector<std::size_t> new_index(kept_points.size(), 0);
+  std::vector<bool> used(kept_points.size(), false);
+  for(const std::array<std::size_t, 3>& tri : triangles)
+    for(std::size_t v : tri)
+      used[v] = true;
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < kept_points.size(); ++v)
+  {
+    if(used[v])
+    {
+      new_index[v] = kept;
+      kept_points[kept++] = kept_points[v];
+    }
+  }
+  report.isolated_points = kept_points.size() - kept;
+  kept_points.resize(kept);
+  for(std::array<std::size_t, 3>& tri : triangles)
+    for(std::size_t& v : tri)
+      v = new_index[v];
+
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
+    throw Input_error("the checked triangles do not form a valid polygon mesh (unexpected defect)");
+
+  CGAL::clear(mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(kept_points, triangles, mesh);
+  report.number_of_triangles = triangles.size();
+  return report;
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Reads a mesh file as a polygon soup, checks it and builds a triangle mesh
+/// with `build_checked_triangle_mesh()`.
+///
+/// The format is chosen from the extension (case-insensitive): `.off`, `.obj`,
+/// `.ply` or `.stl`. Vertex indices in messages are the order of the vertices in
+/// the file (0-based); for STL, which repeats the corners of every triangle,
+/// identical points are merged by the reader and numbered in order of first
+/// appearance. Face indices are the order of the polygons in the file.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal
+///         `CGAL::vertex_point_t` property map, e.g. `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`
+/// \param filename the file to read
+/// \param mesh the output; cleared first, and left untouched if an error is thrown
+/// \pre nothing: any defect of the file is reported by an exception
+/// \throws CGAL::Surface_voronoi::Input_error when the extension is not one of the
+///         above, the file cannot be opened or parsed, or the soup fails the
+///         checks of `build_checked_triangle_mesh()`; the message starts with
+///         `mesh file '<filename>'`
+/// \returns what was done to the soup (triangulation, re-orientation, isolated points)
+template <class TriangleMesh>
+Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, TriangleMesh& mesh)
+{
+  typedef typename internal::Mesh_point<TriangleMesh>::type Point;
+  const std::string where = "mesh file '" + filename + "'";
+
+  const std::string ext = internal::lower_case_extension(filename);
+  if(ext.empty())
+    throw Input_error(where + ": no file extension to tell the format (expected .off, .obj, .ply or .stl)");
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    throw Input_error(where + ": unknown extension '." + ext + "' (expected .off, .obj, .ply or .stl)");
+  {
+    std::ifstream probe(filename, std::ios::binary);
+    if(!probe)
+      throw Input_error(where + ": cannot open the file");
+  }
+
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false;
+  try
+  {
+    ok = CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
+  }
+  catch(const std::exception&)
+  {
+    // Some CGAL readers throw on malformed content instead of returning false.
+    ok = false;
+  }
+  if(!ok)
+  {
+    std::string format = ext;
+    for(char& c : format)
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    throw Input_error(where + ": cannot be read as " + format + " (malformed or unsupported content)");
+  }
+
+  try
+  {
+    return build_checked_triangle_mesh(points, polygons, mesh);
+  }
+  catch(const Input_error& e)
+  {
+    throw Input_error(where + ": " + e.what());
+  }
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Checks a triangle mesh already in memory, for the same defects as
+/// `check_polygon_soup()` that a halfedge data structure can hold.
+///
+/// Vertices and faces are named by their position in the iteration order of
+/// `vertices(tm)` and `faces(tm)` (0-based). The checks run in this order:
+/// no face; a non-finite coordinate; for each face, not a triangle, then
+/// collinear corners (exact predicate); a non-manifold vertex (its faces form
+/// several umbrellas, or it is pinched between boundaries).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertex descriptors to points
+/// \param tm the mesh
+/// \param vpm the positions of the vertices of `tm`
+/// \pre `tm` is a valid halfedge graph (`CGAL::is_valid_polygon_mesh()`)
+/// \throws CGAL::Surface_voronoi::Input_error with a one-line message naming the element
+template <class TriangleMesh, class VertexPointMap>
+void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  typedef boost::graph_traits<TriangleMesh> Traits;
+  typedef typename Traits::vertex_descriptor vertex_descriptor;
+  typedef typename Traits::halfedge_descriptor halfedge_descriptor;
+  typedef typename Traits::face_descriptor face_descriptor;
+
+  if(faces(tm).begin() == faces(tm).end())
+    throw Input_error("the mesh is empty (no faces)");
+
+  typedef CGAL::dynamic_vertex_property_t<std::size_t> Index_tag;
+  typename boost::property_map<TriangleMesh, Index_tag>::const_type position = get(Index_tag(), tm);
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(tm))
+  {
+    double bad = 0;
+    if(!internal::is_finite_point(get(vpm, v), bad))
+      throw Input_error("vertex " + std::to_string(i) + " has a non-finite coordinate (" +
+                        internal::non_finite_name(bad) + ")");
+    put(position, v, i++);
+  }
+
+  i = 0;
+  for(face_descriptor f : faces(tm))
+  {
+    std::vector<internal::Checking_kernel::Point_3> corners;
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      corners.push_back(internal::to_checking_point(get(vpm, v)));
+    if(corners.size() != 3)
+      throw Input_error("face " + std::to_string(i) + " is not a triangle (it has " +
+                        std::to_string(corners.size()) + " vertices)");
+    if(CGAL::collinear(corners[0], corners[1], corners[2]))
+      throw Input_error("face " + std::to_string(i) + " has zero area");
+    ++i;
+  }
+
+  std::vector<halfedge_descriptor> umbrellas;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(tm, std::back_inserter(umbrellas));
+  if(!umbrellas.empty())
+  {
+    // Report the first one in iteration order, whatever order the search used.
+    std::vector<std::size_t> where;
+    for(halfedge_descriptor h : umbrellas)
+      where.push_back(get(position, target(h, tm)));
+    std::sort(where.begin(), where.end());
+    const std::size_t v = where.front();
+    const std::size_t count =
+        static_cast<std::size_t>(std::upper_bound(where.begin(), where.end(), v) - where.begin());
+    if(count > 1)
+      throw Input_error("vertex " + std::to_string(v) + " is non-manifold: its faces form " +
+                        std::to_string(count) + " separate fans");
+    throw Input_error("vertex " + std::to_string(v) +
+                      " is non-manifold: its faces do not form a single fan (the surface is pinched there)");
+  }
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Same as `check_triangle_mesh(tm, vpm)` with the internal vertex point map of `tm`.
+/// \param tm the mesh
+/// \pre `tm` is a valid halfedge graph
+/// \throws CGAL::Surface_voronoi::Input_error as `check_triangle_mesh(tm, vpm)`
+template <class TriangleMesh>
+void check_triangle_mesh(const TriangleMesh& tm)
+{
+  check_triangle_mesh(tm, get(CGAL::vertex_point, tm));
+}
+
+} // namespace IO
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H

@@ -1,0 +1,357 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Plain-text record files: the sites file (`x y z [weight]` per line) and the
+// breaklines file (two vertex indices per line) share one grammar, so that
+// users learn one set of rules and errors look the same:
+//  - one record a line; fields separated by spaces or tabs;
+//  - `#` starts a comment running to the end of the line;
+//  - blank, whitespace-only and comment-only lines are skipped;
+//  - a CR before the LF (Windows line ends) is accepted;
+//  - errors cite the physical line number, 1-based.
+// Record (site) indices are the count of data lines before the record, 0-based.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <istream>
+#include <limits>
+#include <locale>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace IO {
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// One site as read from a sites file.
+struct Site_record
+{
+  double x = 0, y = 0, z = 0;
+  /// the fourth field, or 0 when the line has only three
+  double weight = 0;
+  /// whether the line had a fourth field
+  bool has_weight = false;
+  /// physical line number in the file (1-based), for later error messages
+  std::size_t line = 0;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// One line of a breaklines file: two vertex indices.
+struct Index_pair_record
+{
+  std::size_t first = 0, second = 0;
+  /// physical line number in the file (1-based), for later error messages
+  std::size_t line = 0;
+};
+
+namespace internal {
+
+// Tokens go into messages verbatim; control bytes or a huge token would make a
+// one-line message unreadable, so they are escaped and shortened.
+inline std::string printable_token(const std::string& token)
+{
+  const std::size_t max_length = 40;
+  std::string out;
+  for(std::size_t i = 0; i < token.size() && i < max_length; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(token[i]);
+    if(c < 0x20 || c == 0x7f)
+    {
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\x%02X", static_cast<unsigned>(c));
+      out += buffer;
+    }
+    else
+      out += static_cast<char>(c);
+  }
+  if(token.size() > max_length)
+    out += "...";
+  return out;
+}
+
+inline std::string line_prefix(const std::string& file_kind, std::size_t line)
+{
+  return file_kind + " line " + std::to_string(line) + ": ";
+}
+
+enum class Number_status { ok, not_a_number, non_finite };
+
+// Decimal numbers only: what strtod accepts beyond that (hexadecimal floats,
+// leading white space other than our separators) is not part of the grammar.
+// strtod follows the C locale's LC_NUMERIC, which is "C" (decimal point '.')
+// unless the program calls setlocale(); the package never does.
+inline Number_status parse_double(const std::string& token, double& value)
+{
+  if(token.empty())
+    return Number_status::not_a_number;
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  value = std::strtod(begin, &end);
+  if(end == begin || static_cast<std::size_t>(end - begin) != token.size())
+    return Number_status::not_a_number;
+  // "nan", "inf", "infinity" and overflowing literals (strtod gives HUGE_VAL)
+  // all land here; underflow to a subnormal or zero is accepted as the
+  // nearest double.
+  if(!std::isfinite(value))
+    return Number_status::non_finite;
+  for(char c : token)
+    if(!((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'))
+      return Number_status::not_a_number;
+  return Number_status::ok;
+}
+
+inline bool parse_index(const std::string& token, std::size_t& value, bool& overflow)
+{
+  overflow = false;
+  if(token.empty())
+    return false;
+  for(char c : token)
+    if(c < '0' || c > '9')
+      return false;
+  errno = 0;
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(token.c_str(), &end, 10);
+  if(errno == ERANGE || v > static_cast<unsigned long long>(std::numeric_limits<std::size_t>::max()))
+  {
+    overflow = true;
+    return false;
+  }
+  value = static_cast<std::size_t>(v);
+  return true;
+}
+
+// The 17 significant digits of "%.17g" identify every double uniquely, so the
+// text reads back to the same bits; the classic locale keeps the '.' whatever
+// locale the caller's stream carries.
+inline std::string format_double(double v)
+{
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out << std::setprecision(17) << v;
+  return out.str();
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Splits a stream into records following the grammar shared by the package's
+/// text files: one record a line, fields separated by spaces or tabs, `#` to
+/// the end of the line is a comment, lines without fields are skipped, a
+/// trailing CR is dropped.
+///
+/// \param in the stream to read to its end
+/// \returns for every line with at least one field, its physical line number
+///          (1-based) and its fields, in file order
+/// \throws CGAL::Surface_voronoi::Input_error if the stream fails other than by reaching its end
+inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_records(std::istream& in)
+{
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> records;
+  std::string text;
+  std::size_t line = 0;
+  while(std::getline(in, text))
+  {
+    ++line;
+    if(!text.empty() && text.back() == '\r')
+      text.pop_back();
+    const std::size_t hash = text.find('#');
+    if(hash != std::string::npos)
+      text.erase(hash);
+    std::vector<std::string> fields;
+    std::size_t i = 0;
+    while(i < text.size())
+    {
+      while(i < text.size() && (text[i] == ' ' || text[i] == '\t'))
+        ++i;
+      const std::size_t start = i;
+      while(i < text.size() && text[i] != ' ' && text[i] != '\t')
+        ++i;
+      if(i > start)
+        fields.push_back(text.substr(start, i - start));
+    }
+    if(!fields.empty())
+      records.emplace_back(line, std::move(fields));
+  }
+  if(in.bad())
+    throw Input_error("read error after line " + std::to_string(line));
+  return records;
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Reads a sites file: each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
+/// with the grammar of `tokenize_records()`. Numbers are parsed with `std::strtod`,
+/// which must consume the whole field, so the program's LC_NUMERIC locale must use
+/// '.' as decimal point (true unless the program changes it with `setlocale()`).
+/// Hexadecimal numbers are rejected.
+///
+/// \param in the stream to read to its end
+/// \returns the sites in file order; the site index is the position in this vector
+/// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
+///         `sites file line 7: expected 3 or 4 numbers (x y z [weight]), found 2`,
+///         `sites file line 3: 'abc' is not a number`,
+///         `sites file line 9: non-finite value 'nan'` (also for `inf` and overflow like `1e999`)
+inline std::vector<Site_record> read_sites_file(std::istream& in)
+{
+  const std::string kind = "sites file";
+  std::vector<Site_record> sites;
+  for(const auto& record : tokenize_records(in))
+  {
+    const std::size_t line = record.first;
+    const std::vector<std::string>& fields = record.second;
+    if(fields.size() != 3 && fields.size() != 4)
+      throw Input_error(internal::line_prefix(kind, line) +
+                        "expected 3 or 4 numbers (x y z [weight]), found " +
+                        std::to_string(fields.size()));
+    double values[4] = { 0, 0, 0, 0 };
+    for(std::size_t k = 0; k < fields.size(); ++k)
+    {
+      switch(internal::parse_double(fields[k], values[k]))
+      {
+      case internal::Number_status::ok:
+        break;
+      case internal::Number_status::not_a_number:
+        throw Input_error(internal::line_prefix(kind, line) + "'" +
+                          internal::printable_token(fields[k]) + "' is not a number");
+      case internal::Number_status::non_finite:
+        throw Input_error(internal::line_prefix(kind, line) + "non-finite value '" +
+                          internal::printable_token(fields[k]) + "'");
+      }
+    }
+    Site_record site;
+    site.x = values[0];
+    site.y = values[1];
+    site.z = values[2];
+    site.has_weight = (fields.size() == 4);
+    site.weight = values[3];
+    site.line = line;
+    sites.push_back(site);
+  }
+  return sites;
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Reads a sites file from disk; see `read_sites_file(std::istream&)`.
+/// \param filename the file to read
+/// \throws CGAL::Surface_voronoi::Input_error if the file cannot be opened
+///         (`cannot open sites file '<filename>'`) or breaks the grammar
+inline std::vector<Site_record> read_sites_file(const std::string& filename)
+{
+  // Binary mode: line ends are handled by the grammar, identically on every platform.
+  std::ifstream in(filename, std::ios::binary);
+  if(!in)
+    throw Input_error("cannot open sites file '" + filename + "'");
+  return read_sites_file(in);
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Writes sites in the format read by `read_sites_file()`: one line per site,
+/// `x y z`, or `x y z w` on every line when some weight is non-zero. Numbers
+/// have 17 significant digits, so reading the file back gives the same doubles.
+///
+/// \tparam PointRange a range of points with `x()`, `y()`, `z()` accepted by `CGAL::to_double()`
+/// \param out the stream to write to
+/// \param points the sites
+/// \param weights empty, or one weight per site
+/// \pre `weights.empty() || weights.size() == points.size()`
+/// \throws CGAL::Surface_voronoi::Input_error if the sizes differ, a value is not
+///         finite (it could not be read back), or the stream fails
+template <class PointRange>
+void write_sites_file(std::ostream& out, const PointRange& points,
+                      const std::vector<double>& weights = std::vector<double>())
+{
+  std::size_t n = 0;
+  for(auto it = points.begin(); it != points.end(); ++it)
+    ++n;
+  if(!weights.empty() && weights.size() != n)
+    throw Input_error("write_sites_file: " + std::to_string(weights.size()) + " weights for " +
+                      std::to_string(n) + " sites");
+  bool with_weights = false;
+  for(double w : weights)
+    if(w != 0)
+      with_weights = true;
+
+  std::size_t i = 0;
+  for(const auto& p : points)
+  {
+    const double values[4] = { CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                               CGAL::to_double(p.z()), with_weights ? weights[i] : 0.0 };
+    const std::size_t count = with_weights ? 4 : 3;
+    std::string line;
+    for(std::size_t k = 0; k < count; ++k)
+    {
+      if(!std::isfinite(values[k]))
+        throw Input_error("write_sites_file: site " + std::to_string(i) +
+                          " has a non-finite value");
+      if(k > 0)
+        line += ' ';
+      line += internal::format_double(values[k]);
+    }
+    line += '\n';
+    out << line;
+    ++i;
+  }
+  if(!out)
+    throw Input_error("write_sites_file: the output stream failed");
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Reads records of two non-negative decimal integers (e.g. the vertex indices
+/// of a breaklines file), with the grammar of `tokenize_records()`. Signs are
+/// not accepted.
+///
+/// \param in the stream to read to its end
+/// \param file_kind how messages name the file, e.g. `breaklines file`
+/// \returns the pairs in file order, with their physical line numbers
+/// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
+///         `breaklines file line 4: expected 2 non-negative integers, found 3`,
+///         `breaklines file line 4: '-3' is not a non-negative integer`,
+///         `breaklines file line 4: '99999999999999999999999' is out of range`
+inline std::vector<Index_pair_record> parse_index_pairs(std::istream& in,
+                                                        const std::string& file_kind = "breaklines file")
+{
+  std::vector<Index_pair_record> pairs;
+  for(const auto& record : tokenize_records(in))
+  {
+    const std::size_t line = record.first;
+    const std::vector<std::string>& fields = record.second;
+    if(fields.size() != 2)
+      throw Input_error(internal::line_prefix(file_kind, line) +
+                        "expected 2 non-negative integers, found " + std::to_string(fields.size()));
+    std::size_t values[2] = { 0, 0 };
+    for(std::size_t k = 0; k < 2; ++k)
+    {
+      bool overflow = false;
+      if(!internal::parse_index(fields[k], values[k], overflow))
+        throw Input_error(internal::line_prefix(file_kind, line) + "'" +
+                          internal::printable_token(fields[k]) + "'" +
+                          (overflow ? " is out of range" : " is not a non-negative integer"));
+    }
+    Index_pair_record pair;
+    pair.first = values[0];
+    pair.second = values[1];
+    pair.line = line;
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+} // namespace IO
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H

@@ -1,0 +1,195 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Cutting (SurfaceVoronoi, stage 2): inside one face, the lower envelope of the candidate
+// fields. With squared distances interpolated linearly, the difference of two fields is
+// affine, so every site's piece is a convex polygon obtained by clipping the triangle with
+// one half-plane per competitor. Vertices are kept symbolic (a corner, a bisector crossing
+// a mesh edge, or a triple point) so that stitching can identify them across faces.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUTTING_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUTTING_H
+
+#include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
+#include <CGAL/Surface_voronoi_diagram/internal/propagation.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// A vertex of a piece, in terms of the face's candidate list (indices into it).
+struct Piece_vertex
+{
+  enum Kind : std::uint8_t { CORNER, EDGE, TRIPLE };
+  Kind kind;
+  std::uint8_t local;    // CORNER: the corner; EDGE: the local edge (corner local -> local+1)
+  std::uint32_t other;   // EDGE: the other site of the bisector; TRIPLE: first other site
+  std::uint32_t third;   // TRIPLE: second other site
+};
+
+/// What a piece's edge lies on: a local edge of the face, or the bisector with another site.
+struct Piece_edge_support
+{
+  bool on_mesh_edge;
+  std::uint8_t local;    // the local edge when on_mesh_edge
+  std::uint32_t other;   // the other site (candidate index) otherwise
+};
+
+struct Raw_piece
+{
+  std::uint32_t candidate;                    // index into the face's candidate list
+  std::vector<Piece_vertex> vertices;         // counter-clockwise, as the face
+  std::vector<Piece_edge_support> supports;   // supports[n]: edge vertices[n] -> vertices[n+1]
+};
+
+struct Face_cut
+{
+  std::vector<Raw_piece> pieces;
+  bool degenerate = false;                    // some vertex lies exactly on a further bisector
+};
+
+class Face_cutter
+{
+public:
+  explicit Face_cutter(const std::vector<Face_field>& candidates) : m_c(candidates) {}
+
+  /// sign of h_il = D_i - D_l at vertex `v` of the piece of candidate i
+  int sign_at(const Piece_vertex& v, std::uint32_t i, std::uint32_t l) const
+  {
+    const double* Di = m_c[i].value.data();
+    const double* Dl = m_c[l].value.data();
+    switch(v.kind)
+    {
+    case Piece_vertex::CORNER:
+      return (Di[v.local] > Dl[v.local]) - (Di[v.local] < Dl[v.local]);
+    case Piece_vertex::EDGE:
+    {
+      const int k0 = v.local, k1 = (v.local + 1) % 3;
+      const double* Dj = m_c[v.other].value.data();
+      // The crossing of bisector (i,j) with the edge is at t = A / (A - B); there
+      // h_il = (A*D - B*C) / (A - B), and A - B has the sign of A.
+      const int sA = (Di[k0] > Dj[k0]) - (Di[k0] < Dj[k0]);
+      const int s = sign_of_det2_of_differences(Di[k0], Dj[k0], Di[k1], Dj[k1], Di[k0], Dl[k0], Di[k1], Dl[k1]);
+      // A*D - B*C with A=(Di-Dj)(k0), B=(Di-Dj)(k1), C=(Di-Dl)(k0), D=(Di-Dl)(k1)
+      return s * sA;
+    }
+    case Piece_vertex::TRIPLE:
+    default:
+    {
+      const double* Dj = m_c[v.other].value.data();
+      const double* Dm = m_c[v.third].value.data();
+      const Difference_row rij = { Di, Dj }, rim = { Di, Dm }, ril = { Di, Dl };
+      return sign_of_det3_of_differences(rij, rim, &ril) * sign_of_det3_of_differences(rij, rim, nullptr);
+    }
+    }
+  }
+
+  Face_cut cut() const
+  {
+    Face_cut result;
+    const std::uint32_t n = static_cast<std::uint32_t>(m_c.size());
+    for(std::uint32_t i = 0; i < n; ++i)
+    {
+      Raw_piece piece;
+      piece.candidate = i;
+      for(std::uint8_t k = 0; k < 3; ++k)
+      {
+        piece.vertices.push_back(Piece_vertex{ Piece_vertex::CORNER, k, 0, 0 });
+        piece.supports.push_back(Piece_edge_support{ true, k, 0 });
+      }
+      bool empty = false;
+      for(std::uint32_t l = 0; l < n && !empty; ++l)
+      {
+        if(l == i)
+          continue;
+        const double* Di = m_c[i].value.data();
+        const double* Dl = m_c[l].value.data();
+        if(Di[0] == Dl[0] && Di[1] == Dl[1] && Di[2] == Dl[2])
+        {
+          // identical fields on this face: the lower site index takes it all
+          if(m_c[l].site < m_c[i].site) empty = true;
+          continue;
+        }
+        if(Dl[0] > Di[0] && Dl[1] > Di[1] && Dl[2] > Di[2])
+          continue;   // l is above i on the whole face
+        empty = !clip(piece, i, l, result.degenerate);
+      }
+      if(!empty)
+        result.pieces.push_back(std::move(piece));
+    }
+    return result;
+  }
+
+private:
+  // Clips the piece of candidate i by {h_il <= 0}; returns false if nothing of positive
+  // area remains.
+  bool clip(Raw_piece& piece, std::uint32_t i, std::uint32_t l, bool& degenerate) const
+  {
+    const std::size_t n = piece.vertices.size();
+    m_signs.resize(n);
+    bool any_positive = false, any_negative = false;
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      m_signs[k] = sign_at(piece.vertices[k], i, l);
+      any_positive |= (m_signs[k] > 0);
+      any_negative |= (m_signs[k] < 0);
+      if(m_signs[k] == 0) degenerate = true;
+    }
+    if(!any_positive)
+      return true;
+    if(!any_negative)
+      return false;
+
+    // origin of each output vertex: (index, is_crossing) -> crossing on edge index
+    std::vector<Piece_vertex> out_vertices;
+    std::vector<std::pair<std::size_t, bool> > origin;
+    out_vertices.reserve(n + 1);
+    origin.reserve(n + 1);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t k1 = (k + 1) % n;
+      if(m_signs[k] <= 0)
+      {
+        out_vertices.push_back(piece.vertices[k]);
+        origin.emplace_back(k, false);
+      }
+      if(m_signs[k] * m_signs[k1] < 0)
+      {
+        const Piece_edge_support& s = piece.supports[k];
+        if(s.on_mesh_edge)
+          out_vertices.push_back(Piece_vertex{ Piece_vertex::EDGE, s.local, l, 0 });
+        else
+          out_vertices.push_back(Piece_vertex{ Piece_vertex::TRIPLE, 0, s.other, l });
+        origin.emplace_back(k, true);
+      }
+    }
+    const std::size_t m = out_vertices.size();
+    if(m < 3)
+      return false;
+    std::vector<Piece_edge_support> out_supports(m);
+    for(std::size_t k = 0; k < m; ++k)
+    {
+      const std::pair<std::size_t, bool>& u = origin[k];
+      const std::pair<std::size_t, bool>& w = origin[(k + 1) % m];
+      // the output edge follows input edge u.first directly iff w is on that same edge
+      const bool direct = (w.second && w.first == u.first) || (!w.second && w.first == (u.first + 1) % n);
+      out_supports[k] = direct ? piece.supports[u.first] : Piece_edge_support{ false, 0, l };
+    }
+    piece.vertices.swap(out_vertices);
+    piece.supports.swap(out_supports);
+    return true;
+  }
+
+  const std::vector<Face_field>& m_c;
+  mutable std::vector<int> m_signs;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif

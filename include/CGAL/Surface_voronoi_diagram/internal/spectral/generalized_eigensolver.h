@@ -1,0 +1,203 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Smallest eigenpairs of L phi = lambda M phi (L symmetric positive semi-definite,
+// M diagonal positive) by Spectra's shift-invert Lanczos with a factorization we choose.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// The operator y = (A - sigma B)^{-1} x that Spectra's shift-invert mode needs, minus the
+/// eigenpairs already found. Spectra's own `SymShiftInvert` factorizes with SparseLU; a
+/// symmetric factorization (LDLT by default) is about twice as fast with half the memory,
+/// since A - sigma B is symmetric positive definite for sigma < 0.
+///
+/// Deflation: a Krylov method started from one vector sees one direction per distinct
+/// eigenvalue (in exact arithmetic), so repeated eigenvalues (spheres, symmetric shapes) are
+/// silently missed. Spectra applies this operator to x = B v; subtracting
+/// sum_k phi_k phi_k^T x / (lambda_k - sigma) maps the found eigenpairs to 0 so that a
+/// further run finds the missing ones.
+template <class SparseSolver>
+class Shift_invert_operator
+{
+public:
+  typedef double Scalar;
+
+  Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B)
+    : m_A(A), m_B(B)
+  {}
+
+  Eigen::Index rows() const { return m_A.rows(); }
+  Eigen::Index cols() const { return m_A.cols(); }
+
+  void set_shift(const Scalar& sigma)
+  {
+    if(m_factorized && sigma == m_sigma)
+      return;
+    Eigen::SparseMatrix<double> C = m_A - sigma * m_B;
+    m_solver.compute(C);
+    if(m_solver.info() != Eigen::Success)
+      throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
+    m_sigma = sigma;
+    m_factorized = true;
+  }
+
+  void set_deflation(const Eigen::MatrixXd& vectors, const Eigen::VectorXd& eigenvalues)
+  {
+    m_deflation_vectors = vectors;
+    m_deflation_weights = (eigenvalues.array() - m_sigma).inverse().matrix();
+  }
+
+  void perform_op(const Scalar* x, Scalar* y) const
+  {
+    Eigen::Map<const Eigen::VectorXd> xv(x, rows());
+    Eigen::Map<Eigen::VectorXd> yv(y, rows());
+    yv.noalias() = m_solver.solve(xv);
+    if(m_deflation_vectors.cols() > 0)
+    {
+      const Eigen::VectorXd c = (m_deflation_vectors.transpose() * xv).cwiseProduct(m_deflation_weights);
+      yv.noalias() -= m_deflation_vectors * c;
+    }
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& m_A;
+  const Eigen::SparseMatrix<double>& m_B;
+  SparseSolver m_solver;
+  double m_sigma = 0;
+  bool m_factorized = false;
+  Eigen::MatrixXd m_deflation_vectors;
+  Eigen::VectorXd m_deflation_weights;
+};
+
+struct Eigen_solve_result
+{
+  Eigen::VectorXd eigenvalues;   // ascending
+  Eigen::MatrixXd eigenvectors;  // M-orthonormal columns
+  long iterations = 0;
+  long operations = 0;
+  int rounds = 0;                // Lanczos runs (1 + deflated runs that looked for missed ones)
+};
+
+/// Computes the `nev` smallest eigenpairs. The shift is negative and scaled to the mesh
+/// (eigenvalues scale as 1/size^2), so L - sigma M is positive definite; a shift of
+/// exactly 0 factorizes a singular matrix and returns garbage without complaint.
+template <class SparseSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >
+Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
+                                                   const Eigen::SparseMatrix<double>& M,
+                                                   Eigen::Index nev,
+                                                   double tolerance = 1e-10,
+                                                   Eigen::Index max_iterations = 1000)
+{
+  const Eigen::Index n = L.rows();
+  if(nev < 1 || nev >= n)
+    throw Input_error("the mesh has " + std::to_string(n) + " vertices: too few for "
+                      + std::to_string(nev) + " eigenpairs (need more vertices than eigenpairs)");
+
+  const double mean_l = L.diagonal().mean();
+  const double mean_m = M.diagonal().mean();
+  if(!(mean_l > 0) || !(mean_m > 0))
+    throw Numerical_error("the Laplacian or mass matrix is degenerate (zero diagonal)");
+  const double sigma = -1e-6 * mean_l / mean_m;
+
+  typedef Shift_invert_operator<SparseSolver> Op;
+  typedef Spectra::SparseSymMatProd<double> BOp;
+  Op op(L, M);
+  BOp bop(M);
+  op.set_shift(sigma);
+
+  Eigen_solve_result r;
+  Eigen::VectorXd values;
+  Eigen::MatrixXd vectors(n, 0);
+  const int max_rounds = 8;
+  for(int round = 0; round < max_rounds; ++round)
+  {
+    // The first run asks for everything; later runs only check for missed eigenvalues
+    // below the largest one kept, so a few suffice.
+    const Eigen::Index found = vectors.cols();
+    Eigen::Index want = (round == 0) ? nev : (std::min<Eigen::Index>)(nev, 4);
+    want = (std::min<Eigen::Index>)(want, n - found - 1);
+    if(want < 1)
+      break;
+    const Eigen::Index ncv = (std::min)(n, (std::max<Eigen::Index>)(4 * want, 40));
+    op.set_deflation(vectors, values);
+    Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, want, ncv, sigma);
+    solver.init();
+    const Eigen::Index converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tolerance,
+                                                  Spectra::SortRule::SmallestAlge);
+    r.iterations += static_cast<long>(solver.num_iterations());
+    r.operations += static_cast<long>(solver.num_operations());
+    ++r.rounds;
+    if(solver.info() != Spectra::CompInfo::Successful || converged < want)
+      throw Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
+                            + std::to_string(want) + " eigenpairs after " + std::to_string(solver.num_iterations())
+                            + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
+    Eigen::VectorXd new_values = solver.eigenvalues();
+    Eigen::MatrixXd new_vectors = solver.eigenvectors();
+    if(!new_values.allFinite() || !new_vectors.allFinite())
+      throw Numerical_error("the eigen-solver returned non-finite values");
+
+    const double threshold = (found >= nev) ? values[nev - 1] : std::numeric_limits<double>::infinity();
+    // Only eigenpairs below the current nev-th one matter; the deflated zero eigenvalues
+    // (lambda = sigma + 1/0 = inf) are never among them.
+    std::vector<Eigen::Index> keep;
+    for(Eigen::Index k = 0; k < new_values.size(); ++k)
+      if(new_values[k] < threshold * (1 - 1e-12))
+        keep.push_back(k);
+    if(round > 0 && keep.empty())
+      break;
+    Eigen::MatrixXd merged_vectors(n, found + static_cast<Eigen::Index>(keep.size()));
+    Eigen::VectorXd merged_values(found + static_cast<Eigen::Index>(keep.size()));
+    merged_vectors.leftCols(found) = vectors;
+    merged_values.head(found) = values;
+    for(std::size_t j = 0; j < keep.size(); ++j)
+    {
+      Eigen::VectorXd v = new_vectors.col(keep[j]);
+      // re-orthogonalize against what was found (M inner product), as rounding leaks
+      if(found > 0)
+        v -= vectors * (vectors.transpose() * (M * v));
+      v /= std::sqrt(v.dot(M * v));
+      merged_vectors.col(found + static_cast<Eigen::Index>(j)) = v;
+      merged_values[found + static_cast<Eigen::Index>(j)] = v.dot(L * v);
+    }
+    std::vector<Eigen::Index> order(static_cast<std::size_t>(merged_values.size()));
+    for(std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<Eigen::Index>(k);
+    std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return merged_values[a] < merged_values[b]; });
+    const Eigen::Index kept = (std::min<Eigen::Index>)(static_cast<Eigen::Index>(order.size()), nev + 8);
+    values.resize(kept);
+    vectors.resize(n, kept);
+    for(Eigen::Index k = 0; k < kept; ++k)
+    {
+      values[k] = merged_values[order[static_cast<std::size_t>(k)]];
+      vectors.col(k) = merged_vectors.col(order[static_cast<std::size_t>(k)]);
+    }
+    if(round == max_rounds - 1)
+      break;
+  }
+  r.eigenvalues = values.head(nev);
+  r.eigenvectors = vectors.leftCols(nev);
+  return r;
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif
