@@ -378,6 +378,8 @@ struct Profile_piece
 {
   std::vector<Vec2> points;  // dense polyline, points[0] is the previous piece's last point
   std::size_t segments = 0;  // > 0 forces the number of samples (rims)
+  double arc_radius = 0;     // > 0: the piece is an arc of this radius...
+  double arc_center_z = 0;   // ...centred on the axis here, and samples are put back on it
 };
 
 inline Profile_piece line_piece(const Vec2& a, const Vec2& b, std::size_t segments = 0)
@@ -391,6 +393,8 @@ inline Profile_piece line_piece(const Vec2& a, const Vec2& b, std::size_t segmen
 inline Profile_piece arc_piece(double radius, double from, double to, double z_center = 0)
 {
   Profile_piece piece;
+  piece.arc_radius = radius;
+  piece.arc_center_z = z_center;
   const std::size_t n = 2000;
   for(std::size_t i = 0; i <= n; ++i) {
     const double a = from + (to - from) * double(i) / double(n);
@@ -445,7 +449,14 @@ inline std::vector<Vec2> sample_profile(const std::vector<Profile_piece>& pieces
       std::size_t i = static_cast<std::size_t>(std::upper_bound(cost.begin(), cost.end(), c) - cost.begin());
       i = (std::min)((std::max)(i, std::size_t(1)), pts.size() - 1);
       const double span = cost[i] - cost[i - 1];
-      samples.push_back(lerp2(pts[i - 1], pts[i], span > 0 ? (c - cost[i - 1]) / span : 0.0));
+      Vec2 q = lerp2(pts[i - 1], pts[i], span > 0 ? (c - cost[i - 1]) / span : 0.0);
+      if(pieces[p].arc_radius > 0 && j > 0) {
+        // The dense polyline's chords lie inside the circle; a sphere's
+        // vertices should be on it exactly.
+        const double dz = q[1] - pieces[p].arc_center_z, len = std::hypot(q[0], dz);
+        q = {{q[0] * pieces[p].arc_radius / len, pieces[p].arc_center_z + dz * pieces[p].arc_radius / len}};
+      }
+      samples.push_back(q);
     }
   }
   if(!closed_loop)

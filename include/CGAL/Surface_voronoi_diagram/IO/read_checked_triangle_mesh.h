@@ -530,6 +530,7 @@ struct Mesh_point
 /// \tparam Point_3 a point type with `x()`, `y()`, `z()` accepted by `CGAL::to_double()`
 /// \param points the points of the soup
 /// \param polygons each polygon as the indices of its corners in `points`
+/// \pre nothing: any defect of the soup is reported by an exception
 /// \throws CGAL::Surface_voronoi::Input_error with a one-line message naming the
 ///         offending element, e.g. `edge (4, 9) is non-manifold: shared by 3 faces (1, 5, 8)`
 template <class Point_3>

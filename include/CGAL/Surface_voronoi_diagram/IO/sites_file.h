@@ -156,6 +156,7 @@ inline std::string format_double(double v)
 /// trailing CR is dropped.
 ///
 /// \param in the stream to read to its end
+/// \pre nothing
 /// \returns for every line with at least one field, its physical line number
 ///          (1-based) and its fields, in file order
 /// \throws CGAL::Surface_voronoi::Input_error if the stream fails other than by reaching its end
@@ -200,6 +201,7 @@ inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_re
 /// Hexadecimal numbers are rejected.
 ///
 /// \param in the stream to read to its end
+/// \pre the C locale's LC_NUMERIC uses '.' as decimal point (the default)
 /// \returns the sites in file order; the site index is the position in this vector
 /// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
 ///         `sites file line 7: expected 3 or 4 numbers (x y z [weight]), found 2`,
@@ -247,6 +249,7 @@ inline std::vector<Site_record> read_sites_file(std::istream& in)
 /// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Reads a sites file from disk; see `read_sites_file(std::istream&)`.
 /// \param filename the file to read
+/// \pre as `read_sites_file(std::istream&)`
 /// \throws CGAL::Surface_voronoi::Input_error if the file cannot be opened
 ///         (`cannot open sites file '<filename>'`) or breaks the grammar
 inline std::vector<Site_record> read_sites_file(const std::string& filename)
@@ -316,6 +319,7 @@ void write_sites_file(std::ostream& out, const PointRange& points,
 ///
 /// \param in the stream to read to its end
 /// \param file_kind how messages name the file, e.g. `breaklines file`
+/// \pre nothing
 /// \returns the pairs in file order, with their physical line numbers
 /// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
 ///         `breaklines file line 4: expected 2 non-negative integers, found 3`,

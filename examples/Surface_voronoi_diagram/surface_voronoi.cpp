@@ -1,0 +1,350 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// surface_voronoi: the command-line program. Its interface is a contract (see the manual):
+//
+//   surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric NAME]
+//                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
+//                   [--max-site-distance R] [--stats]
+//
+// Exit codes: 0 success (also when some area is reached by no site: a warning says so),
+// 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
+// Every error is one line on stderr.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
+#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
+#include <CGAL/Surface_voronoi_diagram/site_insertion.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Random.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
+namespace SV = CGAL::Surface_voronoi;
+
+namespace {
+
+struct Failure
+{
+  int code;
+  std::string message;
+};
+
+[[noreturn]] void fail(int code, const std::string& message) { throw Failure{ code, message }; }
+
+struct Arguments
+{
+  std::string mesh, sites, output, sites_out, metric = "biharmonic";
+  long long random = -1;
+  unsigned int seed = 0;
+  bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
+  std::size_t dimension = 10;
+  double max_site_distance = 0.01;
+};
+
+const char* usage =
+  "usage: surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric biharmonic|euclidean|rvd]\n"
+  "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
+  "                       [--max-site-distance R] [--stats]";
+
+double parse_number(const std::string& flag, const std::string& text)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if(text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
+    fail(2, flag + " expects a number, got '" + text + "'");
+  return v;
+}
+
+long long parse_integer(const std::string& flag, const std::string& text, long long lo, long long hi)
+{
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if(text.empty() || end != text.c_str() + text.size() || errno != 0 || v < lo || v > hi)
+    fail(2, flag + " expects an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + text + "'");
+  return v;
+}
+
+Arguments parse(int argc, char** argv)
+{
+  Arguments a;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) fail(2, arg + " needs a value");
+      return argv[++i];
+    };
+    if(arg == "--help" || arg == "-h") { std::cout << usage << std::endl; std::exit(0); }
+    else if(arg == "--sites") a.sites = value();
+    else if(arg == "--random") a.random = parse_integer(arg, value(), 1, 100000000);
+    else if(arg == "--seed") { a.seed = static_cast<unsigned int>(parse_integer(arg, value(), 0, 4294967295LL)); a.seed_given = true; }
+    else if(arg == "--metric") a.metric = value();
+    else if(arg == "--dimension") { a.dimension = static_cast<std::size_t>(parse_integer(arg, value(), 1, 10000)); a.dimension_given = true; }
+    else if(arg == "--insert-sites") a.insert_sites = true;
+    else if(arg == "--output") a.output = value();
+    else if(arg == "--sites-out") a.sites_out = value();
+    else if(arg == "--max-site-distance")
+    {
+      a.max_site_distance = parse_number(arg, value());
+      if(a.max_site_distance < 0) fail(2, "--max-site-distance must not be negative");
+    }
+    else if(arg == "--stats") a.stats = true;
+    else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
+    else if(a.mesh.empty()) a.mesh = arg;
+    else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
+  }
+  if(a.mesh.empty()) fail(2, "no mesh given");
+  if(a.sites.empty() == (a.random < 0)) fail(2, "give exactly one of --sites FILE and --random N");
+  if(a.seed_given && a.random < 0) fail(2, "--seed applies to --random only");
+  if(a.metric != "biharmonic" && a.metric != "euclidean" && a.metric != "rvd")
+    fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean or rvd)");
+  if(a.dimension_given && a.metric != "biharmonic") fail(2, "--dimension applies to the biharmonic metric only");
+  return a;
+}
+
+// N area-uniform points: a face with probability proportional to its area, then a
+// uniform point in it.
+std::vector<Location> random_locations(const Mesh& mesh, std::size_t n, unsigned int seed)
+{
+  CGAL::Random rng(seed);
+  std::vector<Mesh::Face_index> fs(mesh.faces().begin(), mesh.faces().end());
+  std::vector<double> cumulative;
+  double total = 0;
+  for(Mesh::Face_index f : fs)
+  {
+    total += std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(source(halfedge(f, mesh), mesh)),
+                                                          mesh.point(target(halfedge(f, mesh), mesh)),
+                                                          mesh.point(target(next(halfedge(f, mesh), mesh), mesh)))));
+    cumulative.push_back(total);
+  }
+  std::vector<Location> out;
+  out.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double x = rng.get_double(0, total);
+    std::size_t k = std::upper_bound(cumulative.begin(), cumulative.end(), x) - cumulative.begin();
+    k = (std::min)(k, fs.size() - 1);
+    double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
+    out.push_back(Location(fs[k], {{ 1 - r1, r1 * (1 - r2), r1 * r2 }}));
+  }
+  return out;
+}
+
+template <class Diagram>
+void report(const Arguments& args, const Diagram& vd, double load, double embedding, double output,
+            double insertion, std::size_t faces)
+{
+  const SV::Diagram_statistics& s = vd.statistics();
+  if(s.unreached_faces > 0)
+    std::cerr << "surface_voronoi: warning: " << s.unreached_faces << " faces (area " << s.unreached_area << ", "
+              << s.unreached_components << " component(s)) are reached by no site and are labelled -1" << std::endl;
+  if(!args.stats) return;
+  std::cout.precision(6);
+  std::cout << "mesh_faces: " << faces << "\n"
+            << "metric: " << args.metric << "\n"
+            << "sites: " << s.sites << "\n"
+            << "cells: " << s.cells << "\n"
+            << "empty_cells: " << s.empty_cells << "\n"
+            << "pieces: " << s.pieces << "\n"
+            << "broken_cells_before_repair: " << s.broken_cells_before_repair << "\n"
+            << "broken_cells: " << s.broken_cells << "\n"
+            << "repair_rounds: " << s.repair_rounds << "\n"
+            << "unreached_faces: " << s.unreached_faces << "\n"
+            << "unreached_area: " << s.unreached_area << "\n"
+            << "surface_area: " << s.surface_area << "\n"
+            << "mean_candidates_per_face: " << s.mean_candidates_per_face << "\n"
+            << "load: " << load << "\n"
+            << "insertion: " << insertion << "\n"
+            << "embedding: " << embedding << "\n"
+            << "propagation: " << s.propagation_seconds << "\n"
+            << "cutting: " << s.cutting_seconds << "\n"
+            << "repair: " << s.repair_seconds << "\n"
+            << "output: " << output << std::endl;
+}
+
+// Runs the diagram on `mesh` with sites given as locations of that mesh.
+template <class Metric>
+void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
+         const SV::Diagram_options& options, double load, double embedding, double insertion,
+         std::vector<Point>& final_sites)
+{
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options);
+  const auto t0 = std::chrono::steady_clock::now();
+  if(!args.output.empty())
+  {
+    try { SV::IO::write_arrangement_PLY(args.output, vd, true); }
+    catch(const SV::Error& e) { fail(4, e.what()); }
+  }
+  final_sites.clear();
+  for(std::size_t i = 0; i < vd.number_of_sites(); ++i) final_sites.push_back(vd.site_point(i));
+  const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report(args, vd, load, embedding, output, insertion, num_faces(mesh));
+}
+
+int run_main(int argc, char** argv)
+{
+  const Arguments args = parse(argc, argv);
+  typedef std::chrono::steady_clock Clock;
+  const auto t0 = Clock::now();
+  Mesh mesh;
+  try { SV::IO::read_checked_triangle_mesh(args.mesh, mesh); }
+  catch(const SV::Input_error& e) { fail(1, e.what()); }
+
+  // sites as surface locations, remembering the sites file's lines for error messages
+  std::vector<std::size_t> lines;
+  std::vector<Location> locations;
+  const double diagonal = [&] {
+    const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
+    return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+  }();
+  if(!args.sites.empty())
+  {
+    std::vector<SV::IO::Site_record> records;
+    try { records = SV::IO::read_sites_file(args.sites); }
+    catch(const SV::Input_error& e) { fail(1, e.what()); }
+    if(records.empty()) fail(1, args.sites + ": the sites file has no sites");
+    typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+    Tree tree;
+    CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
+    tree.accelerate_distance_queries();
+    const double limit = args.max_site_distance * diagonal;
+    for(const SV::IO::Site_record& r : records)
+    {
+      if(r.has_weight && r.weight != 0)
+        fail(1, "sites file line " + std::to_string(r.line) + ": non-zero weights are not supported yet (power diagrams)");
+      const Point p(r.x, r.y, r.z);
+      const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, tree, mesh);
+      const Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+      const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+      if(d > limit)
+      {
+        std::ostringstream os;
+        os.precision(6);
+        os << "sites file line " << r.line << ": the site is " << d << " from the surface, more than "
+           << args.max_site_distance << " x the bounding-box diagonal (" << limit << ")";
+        fail(1, os.str());
+      }
+      locations.push_back(l);
+      lines.push_back(r.line);
+    }
+  }
+  else
+    locations = random_locations(mesh, static_cast<std::size_t>(args.random), args.seed);
+  const double load = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  SV::Diagram_options options;
+  if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+  std::vector<Point> final_sites;
+  try
+  {
+    try
+    {
+      const Mesh* work = &mesh;
+      std::vector<Location> work_sites = locations;
+      SV::Site_insertion_result<Mesh, Point> inserted;
+      double insertion = 0;
+      if(args.insert_sites)
+      {
+        const auto ti = Clock::now();
+        inserted = SV::insert_sites(mesh, locations);
+        work = &inserted.mesh;
+        work_sites.clear();
+        for(auto v : inserted.site_vertices)
+        {
+          // the site as a location of the augmented mesh, at its vertex
+          auto h = halfedge(v, inserted.mesh);
+          if(is_border(h, inserted.mesh)) h = opposite(next(h, inserted.mesh), inserted.mesh);
+          const auto f = face(h, inserted.mesh);
+          std::array<double, 3> b = {{ 0, 0, 0 }};
+          auto g = halfedge(f, inserted.mesh);
+          for(int k = 0; k < 3; ++k, g = next(g, inserted.mesh))
+            if(source(g, inserted.mesh) == v) b[k] = 1;
+          work_sites.push_back(Location(f, b));
+        }
+        insertion = std::chrono::duration<double>(Clock::now() - ti).count();
+      }
+      const auto te = Clock::now();
+      if(args.metric == "biharmonic")
+      {
+        SV::Biharmonic_options bo;
+        bo.dimension = args.dimension;
+        CGAL::Biharmonic_embedding<Mesh> metric(*work, bo);
+        const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
+        run(args, *work, metric, work_sites, options, load, embedding, insertion, final_sites);
+      }
+      else
+      {
+        SV::Euclidean_embedding<Mesh> metric(*work);
+        run(args, *work, metric, work_sites, options, load, 0., insertion, final_sites);
+      }
+    }
+    catch(const SV::Coincident_sites_error& e)
+    {
+      if(!lines.empty())
+        fail(1, "sites file lines " + std::to_string(lines[e.first]) + " and " + std::to_string(lines[e.second])
+                + ": the two sites are at the same surface point");
+      fail(1, e.what());
+    }
+  }
+  catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
+  catch(const SV::Numerical_error& e) { fail(3, e.what()); }
+
+  if(!args.sites_out.empty())
+  {
+    std::ofstream os(args.sites_out);
+    if(!os) fail(4, "cannot open '" + args.sites_out + "' for writing");
+    SV::IO::write_sites_file(os, final_sites);
+    if(!os) fail(4, "failed to write '" + args.sites_out + "'");
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run_main(argc, argv);
+  }
+  catch(const Failure& f)
+  {
+    std::cerr << "surface_voronoi: error: " << f.message << (f.code == 2 ? " (see --help)" : "") << std::endl;
+    return f.code;
+  }
+  catch(const std::bad_alloc&)
+  {
+    std::cerr << "surface_voronoi: error: out of memory" << std::endl;
+    return 3;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "surface_voronoi: error: " << e.what() << std::endl;
+    return 3;
+  }
+}

@@ -1,0 +1,237 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Site insertion, the paper's mode (section 3.1): every site becomes a vertex of a working
+// copy of the mesh, and each face holding sites is re-triangulated (Delaunay inside the
+// face, the face's edges kept), so that the embedding is computed on the augmented mesh.
+// A site on an edge splits the edge (no perturbation is needed); a site at a vertex is
+// that vertex. The input mesh is never modified.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
+/// The augmented mesh of `insert_sites()`.
+template <class TriangleMesh, class Point_3>
+struct Site_insertion_result
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  /// the augmented mesh (sites are vertices)
+  Mesh mesh;
+  /// the vertex of `mesh` at each site, in site order
+  std::vector<typename Mesh::Vertex_index> site_vertices;
+  /// for each face of `mesh`, the input face that contains it
+  typename Mesh::template Property_map<typename Mesh::Face_index,
+                                       typename boost::graph_traits<TriangleMesh>::face_descriptor> input_face;
+  /// number of faces split, edges split and Delaunay flips done
+  std::size_t faces_split = 0, edges_split = 0, flips = 0;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
+/// Inserts the sites (face locations of `tm`) as vertices of a copy of `tm`.
+/// \param np optional `vertex_point_map` of `tm`
+template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Site_insertion_result<TriangleMesh,
+                      typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
+insert_sites(const TriangleMesh& tm, const LocationRange& sites,
+             const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
+  typedef typename boost::property_traits<VPM>::value_type Point_3;
+  typedef Site_insertion_result<TriangleMesh, Point_3> Result;
+  typedef typename Result::Mesh Mesh;
+  typedef typename Mesh::Vertex_index V;
+  typedef typename Mesh::Face_index F;
+  typedef typename Mesh::Halfedge_index H;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Input_face;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+
+  VPM vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                               get_const_property_map(CGAL::vertex_point, tm));
+  Result r;
+  Mesh& m = r.mesh;
+  std::vector<std::pair<Input_face, F> > f2f;
+  CGAL::copy_face_graph(tm, m, CGAL::parameters::vertex_point_map(vpm).face_to_face_output_iterator(std::back_inserter(f2f)));
+  r.input_face = m.template add_property_map<F, Input_face>("f:svd_input_face", boost::graph_traits<TriangleMesh>::null_face()).first;
+  std::unordered_map<std::size_t, std::vector<F> > sub_faces;   // by index in f2f order
+  std::vector<F> copy_of;                                       // input face order -> copy
+  std::unordered_map<Input_face, std::size_t, boost::hash<Input_face> > input_index;
+  for(std::size_t k = 0; k < f2f.size(); ++k)
+  {
+    put(r.input_face, f2f[k].second, f2f[k].first);
+    input_index[f2f[k].first] = k;
+    sub_faces[k].push_back(f2f[k].second);
+  }
+  auto origin_of = [&](F f) { return input_index.at(get(r.input_face, f)); };
+
+  // Each input face has a 2D frame in its plane; all its sub-faces live there.
+  auto frame_of = [&](std::size_t k) {
+    const F f = f2f[k].second;
+    const H h = halfedge(f, m);
+    const Point_3 a = m.point(source(h, m)), b = m.point(target(h, m)), c = m.point(target(next(h, m), m));
+    std::array<std::array<double, 3>, 3> fr;   // origin, u, w
+    const double A[3] = { CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z()) };
+    double u[3] = { CGAL::to_double(b.x()) - A[0], CGAL::to_double(b.y()) - A[1], CGAL::to_double(b.z()) - A[2] };
+    const double v[3] = { CGAL::to_double(c.x()) - A[0], CGAL::to_double(c.y()) - A[1], CGAL::to_double(c.z()) - A[2] };
+    const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for(double& x : u) x /= lu;
+    double nrm[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+    const double ln = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    for(double& x : nrm) x /= ln;
+    const double w[3] = { nrm[1] * u[2] - nrm[2] * u[1], nrm[2] * u[0] - nrm[0] * u[2], nrm[0] * u[1] - nrm[1] * u[0] };
+    fr[0] = { A[0], A[1], A[2] };
+    fr[1] = { u[0], u[1], u[2] };
+    fr[2] = { w[0], w[1], w[2] };
+    return fr;
+  };
+  auto to_2d = [&](const std::array<std::array<double, 3>, 3>& fr, const Point_3& p) {
+    const double d[3] = { CGAL::to_double(p.x()) - fr[0][0], CGAL::to_double(p.y()) - fr[0][1], CGAL::to_double(p.z()) - fr[0][2] };
+    return EK::Point_2(d[0] * fr[1][0] + d[1] * fr[1][1] + d[2] * fr[1][2], d[0] * fr[2][0] + d[1] * fr[2][1] + d[2] * fr[2][2]);
+  };
+
+  // Lawson flips around a new vertex; edges between two input faces (and borders) are kept.
+  auto restore_delaunay = [&](V v) {
+    std::vector<H> stack;
+    for(H h : CGAL::halfedges_around_target(v, m))
+      if(!is_border(h, m)) stack.push_back(next(next(h, m), m));   // the edge opposite v
+    std::size_t guard = 0;
+    while(!stack.empty() && guard++ < 100000)
+    {
+      const H h = stack.back();
+      stack.pop_back();
+      const H o = opposite(h, m);
+      if(is_border(o, m) || is_border(h, m)) continue;
+      if(get(r.input_face, face(h, m)) != get(r.input_face, face(o, m))) continue;
+      if(target(next(h, m), m) != v) continue;   // h no longer faces v
+      const std::size_t k = origin_of(face(h, m));
+      const auto fr = frame_of(k);
+      const EK::Point_2 a = to_2d(fr, m.point(source(h, m))), b = to_2d(fr, m.point(target(h, m)));
+      const EK::Point_2 pv = to_2d(fr, m.point(v)), c = to_2d(fr, m.point(target(next(o, m), m)));
+      // (a, b, v) is counter-clockwise in the frame; flip when c is inside its circle and
+      // the quad is strictly convex
+      if(CGAL::side_of_oriented_circle(a, b, pv, c) != CGAL::ON_POSITIVE_SIDE) continue;
+      if(CGAL::orientation(pv, c, b) == CGAL::orientation(pv, c, a)) continue;
+      if(CGAL::orientation(pv, c, b) == CGAL::COLLINEAR || CGAL::orientation(pv, c, a) == CGAL::COLLINEAR) continue;
+      CGAL::Euler::flip_edge(h, m);
+      ++r.flips;
+      // after the flip the link of v changed: check its edges again
+      for(H g : CGAL::halfedges_around_target(v, m))
+        if(!is_border(g, m)) stack.push_back(next(next(g, m), m));
+    }
+  };
+
+  std::size_t index = 0;
+  for(const auto& loc : sites)
+  {
+    const Input_face fin = loc.first;
+    auto it = input_index.find(fin);
+    if(it == input_index.end())
+      throw Input_error("site " + std::to_string(index) + " is not on a face of the mesh");
+    const std::size_t k = it->second;
+    Point_3 p = CGAL::Polygon_mesh_processing::construct_point(loc, tm, CGAL::parameters::vertex_point_map(vpm));
+    const auto fr = frame_of(k);
+    const EK::Point_2 q = to_2d(fr, p);
+
+    // the sub-face that contains q best (largest smallest barycentric coordinate)
+    F best = F();
+    std::array<double, 3> best_b = {{ -1e300, 0, 0 }};
+    std::array<H, 3> best_h;
+    for(F f : sub_faces[k])
+    {
+      const H h0 = halfedge(f, m);
+      const std::array<H, 3> hs = {{ h0, next(h0, m), next(next(h0, m), m) }};
+      std::array<EK::Point_2, 3> c;
+      for(int j = 0; j < 3; ++j) c[j] = to_2d(fr, m.point(source(hs[j], m)));
+      const double area = CGAL::to_double(CGAL::area(c[0], c[1], c[2]));
+      std::array<double, 3> b;
+      for(int j = 0; j < 3; ++j)
+        b[j] = CGAL::to_double(CGAL::area(q, c[(j + 1) % 3], c[(j + 2) % 3])) / area;
+      if((std::min)((std::min)(b[0], b[1]), b[2]) > (std::min)((std::min)(best_b[0], best_b[1]), best_b[2]))
+      {
+        best = f; best_b = b; best_h = hs;
+      }
+    }
+    const double eps = 1e-10;
+    int small = 0;
+    for(double x : best_b) small += (x <= eps);
+    V nv;
+    if(small >= 2)
+    {
+      int j = 0;
+      while(best_b[j] <= eps) ++j;
+      nv = source(best_h[j], m);   // the site is (numerically) at this vertex
+    }
+    else if(small == 1)
+    {
+      int j = 0;
+      while(best_b[j] > eps) ++j;
+      // the edge opposite corner j runs from corner j+1 to corner j+2: halfedge best_h[j+1]
+      const H h = best_h[(j + 1) % 3];
+      const H o = opposite(h, m);
+      const bool other_side = !is_border(o, m);
+      const F f1 = face(h, m);
+      const F f2 = other_side ? face(o, m) : F();
+      const H hnew = CGAL::Euler::split_edge(h, m);
+      nv = target(hnew, m);
+      m.point(nv) = p;
+      const H n1 = CGAL::Euler::split_face(hnew, next(h, m), m);
+      put(r.input_face, face(opposite(n1, m), m), get(r.input_face, f1));
+      sub_faces[origin_of(f1)].push_back(face(opposite(n1, m), m));
+      if(other_side)
+      {
+        const H n2 = CGAL::Euler::split_face(opposite(h, m), next(opposite(hnew, m), m), m);
+        put(r.input_face, face(opposite(n2, m), m), get(r.input_face, f2));
+        sub_faces[origin_of(f2)].push_back(face(opposite(n2, m), m));
+      }
+      ++r.edges_split;
+      restore_delaunay(nv);
+    }
+    else
+    {
+      const H hc = CGAL::Euler::add_center_vertex(halfedge(best, m), m);
+      nv = target(hc, m);
+      m.point(nv) = p;
+      for(H g : CGAL::halfedges_around_target(nv, m))
+      {
+        const F f = face(g, m);
+        if(get(r.input_face, f) == boost::graph_traits<TriangleMesh>::null_face())
+        {
+          put(r.input_face, f, fin);
+          sub_faces[k].push_back(f);
+        }
+      }
+      ++r.faces_split;
+      restore_delaunay(nv);
+    }
+    r.site_vertices.push_back(nv);
+    ++index;
+  }
+  return r;
+}
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif
