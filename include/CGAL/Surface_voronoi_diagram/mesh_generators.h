@@ -114,6 +114,8 @@ namespace internal {
 typedef std::array<double, 3> Vec3;
 typedef std::array<double, 2> Vec2;
 
+constexpr double pi = 3.14159265358979323846;
+
 inline Vec3 sub3(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
 inline Vec3 add3(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
 inline Vec3 scale3(const Vec3& a, double s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
@@ -259,6 +261,7 @@ void write_soup(const Soup& soup, MutableFaceGraph& out)
   typedef typename boost::property_traits<Vpm>::value_type Point;
 
   CGAL::clear(out);
+  // get, add_vertex and put unqualified: graph adapters provide them by ADL.
   Vpm vpm = get(CGAL::vertex_point, out);
   std::vector<vertex_descriptor> vertices;
   vertices.reserve(soup.points.size());
@@ -409,7 +412,6 @@ inline Profile_piece arc_piece(double radius, double from, double to, double z_c
 inline std::vector<Vec2> sample_profile(const std::vector<Profile_piece>& pieces, bool closed_loop,
                                         double thickness, double h)
 {
-  const double pi = 3.14159265358979323846;
   const double d = h * std::sqrt(3.0) / 2;
   std::vector<Vec2> samples;
   for(std::size_t p = 0; p < pieces.size(); ++p) {
@@ -467,7 +469,6 @@ inline std::vector<Vec2> sample_profile(const std::vector<Profile_piece>& pieces
 inline std::size_t ring_size(const std::vector<Vec2>& samples, std::size_t k, bool closed_loop,
                              double thickness, double h)
 {
-  const double pi = 3.14159265358979323846;
   const std::size_t K = samples.size();
   if(!closed_loop && (k == 0 || k + 1 == K))
     return 1;
@@ -495,7 +496,6 @@ inline std::size_t ring_size(const std::vector<Vec2>& samples, std::size_t k, bo
 inline void stitch_rings(Soup& soup, std::size_t a0, std::size_t na, double phase_a, std::size_t b0,
                          std::size_t nb, double phase_b)
 {
-  const double pi = 3.14159265358979323846;
   if(na == 1) {
     for(std::size_t k = 0; k < nb; ++k)
       soup.add_triangle(a0, b0 + (k + 1) % nb, b0 + k);
@@ -533,7 +533,6 @@ inline void stitch_rings(Soup& soup, std::size_t a0, std::size_t na, double phas
 
 inline Soup revolve(const std::vector<Profile_piece>& pieces, bool closed_loop, double thickness, double h)
 {
-  const double pi = 3.14159265358979323846;
   const std::vector<Vec2> samples = sample_profile(pieces, closed_loop, thickness, h);
   const std::size_t K = samples.size();
   std::vector<std::size_t> start(K), size(K);
@@ -541,18 +540,21 @@ inline Soup revolve(const std::vector<Profile_piece>& pieces, bool closed_loop, 
   Soup soup;
   for(std::size_t k = 0; k < K; ++k)
     size[k] = ring_size(samples, k, closed_loop, thickness, h);
-  // Rings closer than half a row apart lie across a rim: give them one size so
-  // that the half-step stagger holds all around. With sizes n and n + 1 the
-  // rings would drift in and out of phase and the rim would get right
-  // triangles, half as flat as the staggered isosceles ones.
-  for(int pass = 0; pass < 2; ++pass)
+  // Rings much closer than an edge length lie across a rim: give them one
+  // size so that the half-step stagger holds all around. With sizes n and
+  // n + 1 the rings would drift in and out of phase and the rim would get
+  // right triangles, twice as flat as the staggered isosceles ones.
+  for(bool changed = true; changed;) {
+    changed = false;
     for(std::size_t k = 0; k < K; ++k) {
       const std::size_t next = (k + 1) % K;
-      if((next == 0 && !closed_loop) || size[k] == 1 || size[next] == 1)
+      if((next == 0 && !closed_loop) || size[k] == 1 || size[next] == 1 || size[k] == size[next] ||
+         dist2d(samples[k], samples[next]) >= 0.25 * h)
         continue;
-      if(dist2d(samples[k], samples[next]) < 0.25 * h)
-        size[k] = size[next] = (std::max)(size[k], size[next]);
+      size[k] = size[next] = (std::max)(size[k], size[next]);
+      changed = true;
     }
+  }
   for(std::size_t k = 0; k < K; ++k) {
     start[k] = soup.points.size();
     phase[k] = (k % 2 == 1) ? pi / double(size[k]) : 0.0;
@@ -577,7 +579,6 @@ inline Soup revolve(const std::vector<Profile_piece>& pieces, bool closed_loop, 
 inline Soup revolve_to_target(const std::vector<Profile_piece>& pieces, bool closed_loop, double thickness,
                               std::size_t target)
 {
-  const double pi = 3.14159265358979323846;
   double area = 0;  // Pappus, on the dense profile
   for(const Profile_piece& piece : pieces)
     for(std::size_t i = 1; i < piece.points.size(); ++i)
@@ -593,7 +594,6 @@ inline Soup revolve_to_target(const std::vector<Profile_piece>& pieces, bool clo
 // tangent at each of them so the lip ends in a horizontal rim.
 inline void vase_profile(double u, double& r, double& dr)
 {
-  const double pi = 3.14159265358979323846;
   static const double us[] = {0.0, 0.38, 0.80, 1.0};
   static const double rs[] = {0.26, 0.42, 0.17, 0.25};
   std::size_t s = 0;
@@ -687,7 +687,6 @@ void make_icosphere(MutableFaceGraph& out, int subdivisions, double radius = 1.0
 template <class MutableFaceGraph>
 void make_torus(MutableFaceGraph& out, double major_radius, double minor_radius, std::size_t nu, std::size_t nv)
 {
-  const double pi = 3.14159265358979323846;
   internal::check_positive(minor_radius, "minor_radius", "make_torus");
   internal::check_positive(major_radius, "major_radius", "make_torus");
   if(!(minor_radius < major_radius))
@@ -697,7 +696,7 @@ void make_torus(MutableFaceGraph& out, double major_radius, double minor_radius,
   internal::Soup soup;
   for(std::size_t i = 0; i < nu; ++i)
     for(std::size_t j = 0; j < nv; ++j) {
-      const double u = 2 * pi * double(i) / double(nu), v = 2 * pi * double(j) / double(nv);
+      const double u = 2 * internal::pi * double(i) / double(nu), v = 2 * internal::pi * double(j) / double(nv);
       const double rho = major_radius + minor_radius * std::cos(v);
       soup.add_point({{rho * std::cos(u), rho * std::sin(u), minor_radius * std::sin(v)}});
     }
@@ -888,13 +887,12 @@ template <class MutableFaceGraph>
 void make_thin_bowl(MutableFaceGraph& out, const Shell_options& options = Shell_options())
 {
   const char* who = "make_thin_bowl";
-  const double pi = 3.14159265358979323846;
   internal::check_shell_options(options, who);
   const double R = options.size / 3, t = options.thickness * options.size;
   internal::check_thickness(t < 0.25 * R, who, "a quarter of the radius");
-  internal::Profile_piece outer = internal::arc_piece(R, -pi / 2, 0.0);
-  internal::Profile_piece inner = internal::arc_piece(R - t, 0.0, -pi / 2);
-  // Pin the ends on the axis and on the rim exactly (cos(pi/2) is not 0).
+  internal::Profile_piece outer = internal::arc_piece(R, -internal::pi / 2, 0.0);
+  internal::Profile_piece inner = internal::arc_piece(R - t, 0.0, -internal::pi / 2);
+  // Pin the ends on the axis and on the rim exactly (cos(pi / 2) is not 0).
   outer.points.front() = {{0.0, -R}};
   outer.points.back() = {{R, 0.0}};
   inner.points.front() = {{R - t, 0.0}};
@@ -993,16 +991,16 @@ void make_thin_walled_box(MutableFaceGraph& out, const Box_options& options = Bo
 /// faces in the planes `z = +-g/2` with `g = gap * thickness * size`, joined
 /// for `x <= 0` by a half-cylindrical bend (inner radius g/2, outer radius
 /// g/2 + t), the plate spanning `0 <= y <= width`. The free ends at x = L and
-/// the two sides y = 0 and y = width are flat rims. Straight across the gap the
-/// sheets are g apart, along the surface about `2 L`. `L : width` is
-/// `length : width`, scaled to a diagonal of `size`. Topologically a sphere.
+/// the two sides y = 0 and y = width are flat rims. Two facing points of the
+/// inner faces at distance x from the bend are g apart in space but
+/// `2 x + pi g / 2` apart along the surface. `L : width` is `length : width`,
+/// scaled so that the bounding-box diagonal is `size`. Topologically a sphere.
 /// \throws std::invalid_argument on a non-positive parameter, fewer than 100
 /// target vertices, or a fold thicker than a quarter of the sheet width.
 template <class MutableFaceGraph>
 void make_u_fold(MutableFaceGraph& out, const U_fold_options& options = U_fold_options())
 {
   const char* who = "make_u_fold";
-  const double pi = 3.14159265358979323846;
   internal::check_shell_options(options, who);
   internal::check_positive(options.length, "length", who);
   internal::check_positive(options.width, "width", who);
@@ -1023,14 +1021,14 @@ void make_u_fold(MutableFaceGraph& out, const U_fold_options& options = U_fold_o
     // Cross-section in the (x, z) plane: the outer chain and the inner chain
     // have the same number of points, so the two side rims are ladders.
     const std::size_t n_sheet = internal::count_for(L, h);
-    const std::size_t n_bend = (std::max<std::size_t>)(4, internal::count_for(pi * ro, h));
+    const std::size_t n_bend = (std::max<std::size_t>)(4, internal::count_for(internal::pi * ro, h));
     const std::size_t rows = internal::rim_count(options, t, h);
     auto chain = [&](double radius) {
       std::vector<internal::Vec2> c;
       for(std::size_t i = 0; i < n_sheet; ++i)
         c.push_back({{L * (1 - double(i) / double(n_sheet)), -radius}});
       for(std::size_t i = 0; i < n_bend; ++i) {
-        const double a = -pi / 2 - pi * double(i) / double(n_bend);
+        const double a = -internal::pi / 2 - internal::pi * double(i) / double(n_bend);
         c.push_back({{i == 0 ? 0.0 : radius * std::cos(a), i == 0 ? -radius : radius * std::sin(a)}});
       }
       for(std::size_t i = 0; i <= n_sheet; ++i)
@@ -1063,11 +1061,17 @@ void make_u_fold(MutableFaceGraph& out, const U_fold_options& options = U_fold_o
     auto at = [&](const internal::Vec2& p, std::size_t j) {
       return welder.vertex({{p[0], Wd * double(j) / double(ny), p[1]}});
     };
-    for(std::size_t k = 0; k < loop.size(); ++k) {
-      const internal::Vec2 &p = loop[k], &q = loop[(k + 1) % loop.size()];
+    const std::size_t M = loop.size();
+    std::vector<std::size_t> ids(M * (ny + 1));
+    for(std::size_t j = 0; j <= ny; ++j)
+      for(std::size_t k = 0; k < M; ++k)
+        ids[j * M + k] = at(loop[k], j);
+    for(std::size_t k = 0; k < M; ++k) {
+      const internal::Vec2 &p = loop[k], &q = loop[(k + 1) % M];
       const internal::Vec3 outward{{orientation * (q[1] - p[1]), 0.0, -orientation * (q[0] - p[0])}};
       for(std::size_t j = 0; j < ny; ++j)
-        soup.add_quad_facing(at(p, j), at(q, j), at(q, j + 1), at(p, j + 1), outward);
+        soup.add_quad_facing(ids[j * M + k], ids[j * M + (k + 1) % M], ids[(j + 1) * M + (k + 1) % M],
+                             ids[(j + 1) * M + k], outward);
     }
     for(std::size_t side = 0; side < 2; ++side) {
       const std::size_t j = side == 0 ? 0 : ny;

@@ -73,8 +73,14 @@ void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, 
   std::ofstream os(filename, binary ? std::ios::binary : std::ios::out);
   if(!os)
     throw Error("cannot open '" + filename + "' for writing");
-  if(!binary) os.precision(17);
-  if(!CGAL::IO::write_PLY(os, mesh, "surface_voronoi arrangement", CGAL::parameters::use_binary_mode(binary)) || !os)
+  if(binary)
+    CGAL::IO::set_binary_mode(os);
+  else
+  {
+    CGAL::IO::set_ascii_mode(os);
+    os.precision(17);
+  }
+  if(!CGAL::IO::write_PLY(os, mesh, "surface_voronoi arrangement") || !os)
     throw Error("failed to write '" + filename + "'");
 }
 

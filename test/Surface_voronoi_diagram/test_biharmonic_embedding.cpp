@@ -1,0 +1,138 @@
+// Tests of CGAL/Biharmonic_embedding.h: the spectral embedding against its definition.
+#include "test_support.h"
+
+#include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_voronoi_diagram/internal/spectral/cotangent_laplacian.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+using namespace svd_test;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = CGAL::Surface_voronoi::generators;
+
+namespace {
+
+void matrices(const Mesh& m, Eigen::SparseMatrix<double>& L, Eigen::SparseMatrix<double>& M)
+{
+  SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
+  SV::internal::assemble_cotangent_laplacian(im.points, im.triangles, L, M);
+}
+
+} // namespace
+
+TEST_CASE("embedding: eigenvectors are M-orthonormal and solve L phi = lambda M phi", "[embedding]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 48, 20);
+  SV::Biharmonic_options o;
+  o.dimension = 12;
+  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  const Eigen::MatrixXd& phi = e.computed_eigenvectors();
+  const Eigen::VectorXd& lambda = e.computed_eigenvalues();
+  REQUIRE(phi.cols() == 13);
+  const Eigen::MatrixXd G = phi.transpose() * M * phi;
+  CHECK((G - Eigen::MatrixXd::Identity(13, 13)).cwiseAbs().maxCoeff() < 1e-8);
+  for(Eigen::Index k = 0; k < phi.cols(); ++k)
+  {
+    const Eigen::VectorXd r = L * phi.col(k) - lambda[k] * (M * phi.col(k));
+    CHECK(r.norm() / (L * phi.col(k)).norm() < 1e-6 + 1e-6 * (k == 0));
+  }
+  // the coordinates are phi_k / lambda_k for the non-zero modes
+  auto v = *vertices(m).begin();
+  std::vector<double> c(e.dimension());
+  e.coordinates(v, c.data());
+  for(std::size_t k = 0; k < e.dimension(); ++k)
+    CHECK(c[k] == Approx(phi(e.vertex_index(v), Eigen::Index(k + 1)) / lambda[Eigen::Index(k + 1)]).epsilon(1e-12));
+}
+
+TEST_CASE("embedding: the smallest eigenvalues match a dense reference solver", "[embedding]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 2, 1.0);   // 162 vertices: small enough for a dense solve
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Eigen::MatrixXd(L), Eigen::MatrixXd(M));
+  SV::Biharmonic_options o;
+  o.dimension = 20;
+  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  for(Eigen::Index k = 0; k < 21; ++k)
+    CHECK(e.computed_eigenvalues()[k] == Approx(dense.eigenvalues()[k]).epsilon(1e-8).margin(1e-9));
+}
+
+TEST_CASE("embedding: unit sphere eigenvalues l(l+1) with multiplicities 2l+1", "[embedding]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 4, 1.0);   // 2562 vertices
+  SV::Biharmonic_options o;
+  o.dimension = 15;                 // l = 1, 2, 3 exactly: 3 + 5 + 7
+  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  const Eigen::VectorXd& lambda = e.eigenvalues();
+  REQUIRE(lambda.size() == 15);
+  CHECK(e.number_of_zero_modes() == 1);
+  CHECK(std::abs(e.computed_eigenvalues()[0]) < 1e-8);
+  int k = 0;
+  for(int l = 1; l <= 3; ++l)
+    for(int j = 0; j < 2 * l + 1; ++j, ++k)
+      CHECK(lambda[k] == Approx(l * (l + 1)).epsilon(0.01));
+}
+
+TEST_CASE("embedding: a mesh with two components skips two zero modes", "[embedding]")
+{
+  Mesh a, b;
+  GEN::make_icosphere(a, 3, 1.0);
+  GEN::make_icosphere(b, 3, 1.0);
+  for(auto v : vertices(b))
+    b.point(v) = b.point(v) + K::Vector_3(5, 0, 0);
+  Mesh m = a;
+  CGAL::copy_face_graph(b, m);
+  CGAL::Biharmonic_embedding<Mesh> e(m);
+  CHECK(e.number_of_zero_modes() == 2);
+  CHECK(std::abs(e.computed_eigenvalues()[0]) < 1e-8);
+  CHECK(std::abs(e.computed_eigenvalues()[1]) < 1e-8);
+  // the first embedding eigenvalue is a sphere's first non-zero one (each sphere has it x3)
+  CHECK(e.eigenvalues()[0] == Approx(2).epsilon(0.02));
+  CHECK(e.eigenvalues()[5] == Approx(2).epsilon(0.02));
+  CHECK(e.eigenvalues()[6] == Approx(6).epsilon(0.02));
+}
+
+TEST_CASE("embedding: Surface_mesh and Polyhedron_3 give the same embedding", "[embedding]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.4, 30, 12);
+  Polyhedron p;
+  CGAL::copy_face_graph(m, p);
+  CGAL::Biharmonic_embedding<Mesh> em(m);
+  CGAL::Biharmonic_embedding<Polyhedron> ep(p);
+  for(Eigen::Index k = 0; k < em.eigenvalues().size(); ++k)
+    CHECK(ep.eigenvalues()[k] == Approx(em.eigenvalues()[k]).epsilon(1e-9));
+}
+
+TEST_CASE("embedding: clear errors on unusable input", "[embedding][errors]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 0, 1.0);   // 12 vertices
+  SV::Biharmonic_options o;
+  o.dimension = 12;
+  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, o), SV::Input_error);
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(m, o), Catch::Contains("too few"));
+  o.dimension = 0;
+  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, o), SV::Input_error);
+  Mesh empty;
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(empty), Catch::Contains("empty"));
+  // a zero-area face
+  Mesh flat;
+  GEN::make_icosphere(flat, 2, 1.0);
+  auto f = *faces(flat).begin();
+  auto h = halfedge(f, flat);
+  flat.point(target(h, flat)) = flat.point(source(h, flat));
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(flat), Catch::Contains("zero area"));
+  // a NaN coordinate
+  Mesh nan;
+  GEN::make_icosphere(nan, 2, 1.0);
+  nan.point(*vertices(nan).begin()) = Point(std::nan(""), 0, 0);
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(nan), Catch::Contains("non-finite"));
+}

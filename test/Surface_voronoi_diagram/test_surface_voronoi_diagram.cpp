@@ -1,0 +1,342 @@
+// Tests of CGAL/Surface_voronoi_diagram.h: invariants on every metric and several meshes,
+// ties, determinism, thin walls, the RVD baseline against brute force, and bad input.
+#include "test_support.h"
+
+#include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_mesh_shortest_path.h>
+
+#include <map>
+
+using namespace svd_test;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = CGAL::Surface_voronoi::generators;
+
+typedef CGAL::Biharmonic_embedding<Mesh> Biharmonic;
+typedef SV::Euclidean_embedding<Mesh> Euclidean;
+
+namespace {
+
+std::vector<Mesh> test_meshes()
+{
+  std::vector<Mesh> ms(5);
+  GEN::make_icosphere(ms[0], 3, 1.0);
+  GEN::make_torus(ms[1], 1.0, 0.3, 60, 20);
+  GEN::make_planar_grid(ms[2], 30, 25, 1.0, 0.8, 0.2, 7);   // with a border
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 3000;
+  GEN::make_thin_lampshade(ms[3], lo);
+  GEN::U_fold_options uo;
+  uo.target_vertices = 3000;
+  GEN::make_u_fold(ms[4], uo);
+  return ms;
+}
+
+// Bit-level summary of a partition, to compare runs.
+template <class Diagram>
+std::vector<double> fingerprint(const Diagram& vd)
+{
+  std::vector<double> f;
+  for(const auto& v : vd.partition().vertices)
+    f.insert(f.end(), v.point.begin(), v.point.end());
+  for(const auto& p : vd.partition().pieces)
+  {
+    f.push_back(double(p.face));
+    f.push_back(double(p.site));
+    f.push_back(p.area);
+    for(std::size_t id : p.vertices) f.push_back(double(id));
+  }
+  return f;
+}
+
+} // namespace
+
+TEST_CASE("diagram: invariants for the biharmonic metric on several meshes", "[diagram]")
+{
+  std::size_t k = 0;
+  for(const Mesh& m : test_meshes())
+  {
+    INFO("mesh " << k++);
+    Biharmonic e(m);
+    for(std::size_t n : { std::size_t(7), std::size_t(60), std::size_t(400) })
+    {
+      INFO(n << " sites");
+      CGAL::Surface_voronoi_diagram<Mesh> vd(m, e, area_uniform_locations(m, n, unsigned(n)));
+      check_invariants(vd);
+    }
+  }
+}
+
+TEST_CASE("diagram: invariants for the Euclidean metric (EDBVD) on several meshes", "[diagram]")
+{
+  std::size_t k = 0;
+  for(const Mesh& m : test_meshes())
+  {
+    INFO("mesh " << k++);
+    Euclidean e(m);
+    for(std::size_t n : { std::size_t(5), std::size_t(80), std::size_t(700) })
+    {
+      INFO(n << " sites");
+      CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, area_uniform_locations(m, n, 11u + unsigned(n)));
+      check_invariants(vd);
+    }
+  }
+}
+
+TEST_CASE("diagram: sites given as vertices and as points", "[diagram]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.3, 40, 16);
+  Biharmonic e(m);
+  std::vector<Mesh::Vertex_index> vs;
+  for(auto v : vertices(m))
+    if(std::size_t(v) % 37 == 0) vs.push_back(v);
+  CGAL::Surface_voronoi_diagram<Mesh> vd(m, e, vs);
+  check_invariants(vd);
+  for(std::size_t i = 0; i < vs.size(); ++i)
+  {
+    CHECK(vd.site_of(vs[i]) == i);
+    CHECK(CGAL::squared_distance(vd.site_point(i), m.point(vs[i])) == 0);
+  }
+  std::vector<Point> ps;
+  for(auto l : area_uniform_locations(m, 50, 3))
+  {
+    const Point p = point_of(l, m);
+    ps.push_back(Point(p.x() * 1.00001, p.y() * 1.00001, p.z()));   // slightly off the surface
+  }
+  CGAL::Surface_voronoi_diagram<Mesh> vp(m, e, ps);
+  check_invariants(vp);
+}
+
+TEST_CASE("diagram: the same run twice is bit-identical", "[diagram]")
+{
+  Mesh m;
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 2500;
+  GEN::make_thin_lampshade(m, lo);
+  const auto sites = area_uniform_locations(m, 150, 5);
+  Biharmonic e1(m), e2(m);
+  CGAL::Surface_voronoi_diagram<Mesh> a(m, e1, sites), b(m, e2, sites);
+  CHECK(fingerprint(a) == fingerprint(b));
+}
+
+TEST_CASE("diagram: symmetric layouts with exact ties are consistent and deterministic", "[diagram][ties]")
+{
+  // A regular grid with mirror-symmetric sites: bisectors run exactly along mesh edges and
+  // Voronoi vertices fall exactly on mesh vertices, so the tie rule decides everything.
+  Mesh m;
+  GEN::make_planar_grid(m, 21, 21, 1.0, 1.0);
+  std::vector<Point> sites = { Point(0.25, 0.25, 0), Point(0.75, 0.25, 0), Point(0.25, 0.75, 0), Point(0.75, 0.75, 0),
+                               Point(0.5, 0.5, 0), Point(0.5, 0.1, 0), Point(0.5, 0.9, 0), Point(0.1, 0.5, 0), Point(0.9, 0.5, 0) };
+  Euclidean e(m);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites);
+  check_invariants(vd);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> again(m, e, sites);
+  CHECK(fingerprint(vd) == fingerprint(again));
+  // mirror images have equal areas (ties only move measure-zero sets)
+  CHECK(vd.cell_area(0) == Approx(vd.cell_area(1)).epsilon(1e-12));
+  CHECK(vd.cell_area(0) == Approx(vd.cell_area(3)).epsilon(1e-12));
+  CHECK(vd.cell_area(5) == Approx(vd.cell_area(6)).epsilon(1e-12));
+  CHECK(vd.cell_area(7) == Approx(vd.cell_area(8)).epsilon(1e-12));
+  CHECK(vd.cell_area(5) == Approx(vd.cell_area(7)).epsilon(1e-12));
+  // the mesh vertex at (0.5, 0.3) is equidistant from sites 0, 1 and 4? No: from 4 and 5 only;
+  // a point exactly on the bisector of 0 and 1 goes to the lower index
+  for(auto v : vertices(m))
+  {
+    const Point p = m.point(v);
+    if(p.x() == 0.5 && p.y() == 0.05) CHECK(vd.site_of(v) == 5);
+  }
+
+  // the same with the biharmonic metric of the grid (symmetric too)
+  Biharmonic b(m);
+  CGAL::Surface_voronoi_diagram<Mesh> vb(m, b, sites);
+  check_invariants(vb);
+}
+
+TEST_CASE("diagram: four sites around a grid vertex tie there", "[diagram][ties]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 9, 9, 1.0, 1.0);
+  // sites symmetric about (0.5, 0.5), off the grid lines: the centre is a 4-fold tie
+  std::vector<Point> sites = { Point(0.3, 0.3, 0), Point(0.7, 0.3, 0), Point(0.3, 0.7, 0), Point(0.7, 0.7, 0) };
+  Euclidean e(m);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites);
+  check_invariants(vd);
+  for(std::size_t i = 0; i < 4; ++i)
+    CHECK(vd.cell_area(i) == Approx(0.25).epsilon(1e-12));
+}
+
+TEST_CASE("diagram: RVD labels equal the brute-force nearest site", "[diagram][rvd]")
+{
+  std::size_t k = 0;
+  for(const Mesh& m : test_meshes())
+  {
+    INFO("mesh " << k++);
+    Euclidean e(m);
+    const auto sites = area_uniform_locations(m, 120, 17);
+    SV::Diagram_options o;
+    o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, o);
+    std::vector<Point> sp;
+    for(const auto& s : sites) sp.push_back(point_of(s, m));
+    std::size_t wrong = 0, checked = 0;
+    for(const auto& l : area_uniform_locations(m, 4000, 99))
+    {
+      const Point p = point_of(l, m);
+      std::vector<std::pair<double, std::size_t> > d;
+      for(std::size_t i = 0; i < sp.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, sp[i])), i);
+      std::partial_sort(d.begin(), d.begin() + 2, d.end());
+      if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;   // a tie within rounding
+      ++checked;
+      wrong += (vd.site_of(l) != d[0].second);
+    }
+    CHECK(checked > 3900);
+    CHECK(wrong == 0);
+    // the partition covers the surface, pieces may be disconnected (no repair)
+    double sum = vd.unreached_area();
+    for(std::size_t i = 0; i < vd.number_of_sites(); ++i) sum += vd.cell_area(i);
+    CHECK(sum == Approx(CGAL::to_double(CGAL::Polygon_mesh_processing::area(m))).epsilon(1e-9));
+  }
+}
+
+namespace {
+
+// Share of the surface area (on area-uniform samples) whose assigned site is reached along
+// the surface only by a detour: exact geodesic distance more than 3 times the straight line.
+template <class Diagram>
+double through_wall_share(const Mesh& m, const Diagram& vd, std::size_t samples)
+{
+  typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> Traits;
+  typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
+  const auto locs = area_uniform_locations(m, samples, 1234);
+  std::map<std::size_t, std::vector<std::size_t> > by_site;
+  for(std::size_t j = 0; j < locs.size(); ++j) by_site[vd.site_of(locs[j])].push_back(j);
+  std::size_t through = 0;
+  for(const auto& entry : by_site)
+  {
+    Shortest_path sp(m);
+    sp.add_source_point(vd.site_location(entry.first));
+    sp.build_sequence_tree();
+    const Point s = vd.site_point(entry.first);
+    for(std::size_t j : entry.second)
+    {
+      const double g = sp.shortest_distance_to_source_points(locs[j].first, locs[j].second).first;
+      const double straight = std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(locs[j], m), s)));
+      through += (g > 3 * straight + 1e-9);
+    }
+  }
+  return double(through) / double(samples);
+}
+
+} // namespace
+
+TEST_CASE("diagram: biharmonic cells do not reach through thin walls, RVD cells do", "[diagram][thin]")
+{
+  // Tolerance: at most 1% of the area of a biharmonic diagram may be assigned to a site
+  // that the surface reaches only by a detour of more than 3x the straight line.
+  std::vector<Mesh> ms(3);
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 3000;
+  GEN::make_thin_lampshade(ms[0], lo);
+  GEN::U_fold_options uo;
+  uo.target_vertices = 3000;
+  GEN::make_u_fold(ms[1], uo);
+  GEN::Slab_options so;
+  so.target_vertices = 3000;
+  so.thickness = 0.003;
+  GEN::make_thin_slab(ms[2], so);
+  const char* names[] = { "lampshade", "u_fold", "slab" };
+  for(std::size_t k = 0; k < ms.size(); ++k)
+  {
+    const Mesh& m = ms[k];
+    const auto sites = area_uniform_locations(m, 40, 21);
+    Biharmonic b(m);
+    CGAL::Surface_voronoi_diagram<Mesh> vb(m, b, sites);
+    Euclidean e(m);
+    SV::Diagram_options o;
+    o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vr(m, e, sites, o);
+    const double bh = through_wall_share(m, vb, 1500);
+    const double rvd = through_wall_share(m, vr, 1500);
+    INFO(names[k] << ": through-wall share biharmonic " << bh << ", RVD " << rvd);
+    CHECK(bh <= 0.01);
+    CHECK(rvd >= 0.10);
+  }
+}
+
+TEST_CASE("diagram: a component without sites is unreached, not an error", "[diagram]")
+{
+  Mesh a, b;
+  GEN::make_icosphere(a, 3, 1.0);
+  GEN::make_icosphere(b, 2, 0.5);
+  Mesh m = a;
+  for(auto v : vertices(b)) b.point(v) = b.point(v) + K::Vector_3(4, 0, 0);
+  CGAL::copy_face_graph(b, m);
+  std::vector<Location<Mesh> > sites;
+  for(const auto& l : area_uniform_locations(m, 400, 8))
+    if(point_of(l, m).x() < 2) sites.push_back(l);
+  Biharmonic e(m);
+  CGAL::Surface_voronoi_diagram<Mesh> vd(m, e, sites);
+  check_invariants(vd);
+  CHECK(vd.number_of_unreached_faces() == num_faces(b));
+  CHECK(vd.unreached_area() == Approx(CGAL::to_double(CGAL::Polygon_mesh_processing::area(b))).epsilon(1e-9));
+  CHECK(vd.statistics().unreached_components == 1);
+}
+
+TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 2, 1.0);
+  Euclidean e(m);
+  const std::vector<Location<Mesh> > none;
+  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, none)), Catch::Contains("no sites"));
+
+  auto two = area_uniform_locations(m, 5, 1);
+  two.push_back(two[2]);
+  try
+  {
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, two);
+    FAIL("coincident sites accepted");
+  }
+  catch(const SV::Coincident_sites_error& x)
+  {
+    CHECK(x.first == 2);
+    CHECK(x.second == 5);
+    CHECK(std::string(x.what()).find("sites 2 and 5") != std::string::npos);
+  }
+
+  std::vector<Point> far = { Point(0, 0, 1), Point(0, 0, 3) };
+  SV::Diagram_options o;
+  o.max_site_distance = 0.5;
+  try
+  {
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, far, o);
+    FAIL("far site accepted");
+  }
+  catch(const SV::Site_too_far_error& x)
+  {
+    CHECK(x.site == 1);
+    CHECK(x.distance == Approx(2.0).epsilon(1e-6));
+  }
+
+  std::vector<Point> nan = { Point(std::nan(""), 0, 0) };
+  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, nan)), Catch::Contains("non-finite"));
+
+  o = SV::Diagram_options();
+  o.weights = { 1.0 };
+  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, area_uniform_locations(m, 3, 1), o)),
+                    Catch::Contains("weights"));
+
+  // a non-manifold vertex: two triangles sharing only a vertex (a bowtie)
+  Mesh bowtie;
+  const auto v0 = bowtie.add_vertex(Point(0, 0, 0)), v1 = bowtie.add_vertex(Point(1, 0, 0)), v2 = bowtie.add_vertex(Point(0, 1, 0));
+  const auto v3 = bowtie.add_vertex(Point(-1, 0, 0)), v4 = bowtie.add_vertex(Point(0, -1, 0));
+  bowtie.add_face(v0, v1, v2);
+  bowtie.add_face(v0, v3, v4);
+  REQUIRE(num_faces(bowtie) == 2);
+  Euclidean eb(bowtie);
+  std::vector<Mesh::Vertex_index> one = { v1 };
+  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(bowtie, eb, one)), Catch::Contains("vertex 0 is non-manifold"));
+}
