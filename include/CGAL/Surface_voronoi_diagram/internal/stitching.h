@@ -17,10 +17,13 @@
 #include <CGAL/Surface_voronoi_diagram/internal/cutting.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <numeric>
@@ -94,6 +97,153 @@ inline std::array<double, 3> vector_area_term(const std::array<double, 3>& p, co
 }
 
 } // namespace stitching_detail
+
+namespace stitching_detail {
+
+struct Position_hash
+{
+  std::size_t operator()(const std::array<double, 3>& p) const
+  {
+    std::size_t h = 0;
+    for(double x : p)
+    {
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h ^= std::hash<std::uint64_t>()(b) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    }
+    return h;
+  }
+};
+
+inline bool collinear_polygon(const Partition& out, const std::vector<std::size_t>& ids)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+  auto point = [&](std::size_t id) {
+    const std::array<double, 3>& p = out.vertices[id].point;
+    return EK::Point_3(p[0], p[1], p[2]);
+  };
+  const EK::Point_3 a = point(ids[0]);
+  std::size_t k = 1;
+  while(k < ids.size() && point(ids[k]) == a) ++k;
+  if(k == ids.size()) return true;
+  const EK::Point_3 b = point(ids[k]);
+  for(std::size_t j = k + 1; j < ids.size(); ++j)
+    if(!CGAL::collinear(a, b, point(ids[j]))) return false;
+  return true;
+}
+
+} // namespace stitching_detail
+
+inline void weld_coincident_positions(Partition& out)
+{
+  using namespace stitching_detail;
+  std::unordered_map<std::array<double, 3>, std::size_t, Position_hash> first;
+  std::vector<std::size_t> rep(out.vertices.size());
+  std::iota(rep.begin(), rep.end(), std::size_t(0));
+  bool any = false;
+  for(const Partition::Piece& p : out.pieces)
+    for(std::size_t id : p.vertices)
+    {
+      auto r = first.emplace(out.vertices[id].point, id);
+      if(!r.second && r.first->second != id)
+      {
+        rep[id] = r.first->second;
+        any = true;
+      }
+    }
+  if(any)
+  {
+    for(std::size_t id = 0; id < rep.size(); ++id)
+      if(rep[id] != id) ++out.welded_vertices;
+    for(Partition::Piece& p : out.pieces)
+    {
+      std::vector<std::size_t> cleaned;
+      for(std::size_t id : p.vertices)
+      {
+        const std::size_t r = rep[id];
+        if(cleaned.empty() || cleaned.back() != r) cleaned.push_back(r);
+      }
+      while(cleaned.size() > 1 && cleaned.front() == cleaned.back()) cleaned.pop_back();
+      p.vertices.swap(cleaned);
+    }
+  }
+
+  // collinear pieces: their long side's neighbour gets the middle vertices
+  std::vector<std::size_t> degenerate;
+  for(std::size_t k = 0; k < out.pieces.size(); ++k)
+  {
+    const Partition::Piece& p = out.pieces[k];
+    if(p.vertices.size() < 3 || collinear_polygon(out, p.vertices))
+      degenerate.push_back(k);
+  }
+  if(degenerate.empty()) return;
+  std::unordered_map<std::uint64_t, std::size_t> edge_owner;   // directed edge -> piece
+  const std::uint64_t nv = out.vertices.size();
+  std::vector<std::uint8_t> dropped(out.pieces.size(), 0);
+  for(std::size_t k : degenerate) dropped[k] = 1;
+  for(std::size_t k = 0; k < out.pieces.size(); ++k)
+  {
+    if(dropped[k]) continue;
+    const auto& v = out.pieces[k].vertices;
+    for(std::size_t j = 0; j < v.size(); ++j)
+      edge_owner[std::uint64_t(v[j]) * nv + v[(j + 1) % v.size()]] = k;
+  }
+  for(std::size_t k : degenerate)
+  {
+    const auto& v = out.pieces[k].vertices;
+    if(v.size() < 3) continue;   // two vertices: the pieces on both sides already share the edge
+    // order the vertices along the line
+    const std::array<double, 3>& o = out.vertices[v[0]].point;
+    std::array<double, 3> dir = {{ 0, 0, 0 }};
+    double best = -1;
+    for(std::size_t id : v)
+    {
+      const std::array<double, 3>& q = out.vertices[id].point;
+      const double d = (q[0] - o[0]) * (q[0] - o[0]) + (q[1] - o[1]) * (q[1] - o[1]) + (q[2] - o[2]) * (q[2] - o[2]);
+      if(d > best) { best = d; dir = {{ q[0] - o[0], q[1] - o[1], q[2] - o[2] }}; }
+    }
+    auto along = [&](std::size_t id) {
+      const std::array<double, 3>& q = out.vertices[id].point;
+      return (q[0] - o[0]) * dir[0] + (q[1] - o[1]) * dir[1] + (q[2] - o[2]) * dir[2];
+    };
+    std::vector<std::size_t> sorted(v.begin(), v.end());
+    std::sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) { return along(a) < along(b); });
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    // every edge (u, w) of the dropped piece: the piece across it, owning (w, u), gets the
+    // vertices strictly between w and u
+    for(std::size_t j = 0; j < v.size(); ++j)
+    {
+      const std::size_t u = v[j], w = v[(j + 1) % v.size()];
+      auto it = edge_owner.find(std::uint64_t(w) * nv + u);
+      if(it == edge_owner.end()) continue;
+      const double tw = along(w), tu = along(u);
+      std::vector<std::size_t> between;
+      for(std::size_t id : sorted)
+        if(id != u && id != w && along(id) > (std::min)(tu, tw) && along(id) < (std::max)(tu, tw)) between.push_back(id);
+      if(between.empty()) continue;
+      if(tw > tu) std::reverse(between.begin(), between.end());
+      auto& q = out.pieces[it->second].vertices;
+      for(std::size_t i = 0; i < q.size(); ++i)
+        if(q[i] == w && q[(i + 1) % q.size()] == u)
+        {
+          q.insert(q.begin() + std::ptrdiff_t(i + 1), between.begin(), between.end());
+          out.inserted_vertices += between.size();
+          break;
+        }
+    }
+  }
+  std::vector<Partition::Piece> kept;
+  kept.reserve(out.pieces.size());
+  for(std::size_t k = 0; k < out.pieces.size(); ++k)
+    if(!dropped[k]) kept.push_back(std::move(out.pieces[k]));
+  out.pieces.swap(kept);
+  const std::size_t nf = out.face_begin.size() - 1;
+  out.face_begin.assign(nf + 1, out.pieces.size());
+  for(std::size_t p = out.pieces.size(); p-- > 0;)
+    out.face_begin[out.pieces[p].face] = p;
+  for(std::size_t f = nf; f-- > 0;)
+    if(out.face_begin[f] > out.face_begin[f + 1]) out.face_begin[f] = out.face_begin[f + 1];
+}
 
 /// Builds the partition from the candidate lists and the per-face cuts.
 template <class TriangleMesh>
@@ -405,7 +555,12 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
     if(changed) p.vertices.swap(refined);
   }
 
-  // 5. areas
+  // 5. features smaller than double precision: vertices whose computed positions are
+  // bit-identical are one vertex, and pieces left without area are removed (a piece whose
+  // corners are collinear hands its middle vertices to the pieces across its long side)
+  weld_coincident_positions(out);
+
+  // 6. areas
   for(Partition::Piece& p : out.pieces)
   {
     std::array<double, 3> s = {{ 0., 0., 0. }};
