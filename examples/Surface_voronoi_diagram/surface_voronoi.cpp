@@ -154,6 +154,29 @@ std::vector<Location> random_locations(const Mesh& mesh, std::size_t n, unsigned
   return out;
 }
 
+// Projection to the surface, made idempotent: locating a point and constructing it again
+// may move it by an ulp, possibly back and forth between two faces at an edge. Iterate
+// until the sequence repeats and take the lexicographically smallest point of the cycle:
+// written with 17 digits by --sites-out and read back, it gives the very same location,
+// so the diagram is reproduced bit for bit.
+template <class Tree>
+Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
+{
+  std::vector<Point> seen(1, p);
+  std::size_t cycle_start = 0;
+  for(int k = 0; k < 16; ++k)
+  {
+    const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(seen.back(), tree, mesh);
+    const Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+    const auto it = std::find(seen.begin(), seen.end(), q);
+    if(it != seen.end()) { cycle_start = std::size_t(it - seen.begin()); break; }
+    seen.push_back(q);
+    cycle_start = seen.size() - 1;
+  }
+  p = *std::min_element(seen.begin() + std::ptrdiff_t(cycle_start), seen.end());
+  return CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, tree, mesh);
+}
+
 template <class Diagram>
 void report(const Arguments& args, const Diagram& vd, double load, double embedding, double output,
             double insertion, std::size_t faces)
@@ -190,7 +213,7 @@ void report(const Arguments& args, const Diagram& vd, double load, double embedd
 template <class Metric>
 void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
          const SV::Diagram_options& options, double load, double embedding, double insertion,
-         std::vector<Point>& final_sites)
+         const std::vector<Point>& site_points)
 {
   CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options);
   const auto t0 = std::chrono::steady_clock::now();
@@ -199,8 +222,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     try { SV::IO::write_arrangement_PLY(args.output, vd, true); }
     catch(const SV::Error& e) { fail(4, e.what()); }
   }
-  final_sites.clear();
-  for(std::size_t i = 0; i < vd.number_of_sites(); ++i) final_sites.push_back(vd.site_point(i));
+  (void)site_points;
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report(args, vd, load, embedding, output, insertion, num_faces(mesh));
 }
@@ -221,25 +243,26 @@ int run_main(int argc, char** argv)
     const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
     return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
   }();
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  Tree tree;
+  CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
+  tree.accelerate_distance_queries();
+  std::vector<Point> site_points;
   if(!args.sites.empty())
   {
     std::vector<SV::IO::Site_record> records;
     try { records = SV::IO::read_sites_file(args.sites); }
     catch(const SV::Input_error& e) { fail(1, e.what()); }
     if(records.empty()) fail(1, args.sites + ": the sites file has no sites");
-    typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-    Tree tree;
-    CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
-    tree.accelerate_distance_queries();
     const double limit = args.max_site_distance * diagonal;
     for(const SV::IO::Site_record& r : records)
     {
       if(r.has_weight && r.weight != 0)
         fail(1, "sites file line " + std::to_string(r.line) + ": non-zero weights are not supported yet (power diagrams)");
       const Point p(r.x, r.y, r.z);
-      const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, tree, mesh);
-      const Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+      Point q = p;
+      const Location l = canonical_location(q, tree, mesh);
       const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
       if(d > limit)
       {
@@ -250,17 +273,24 @@ int run_main(int argc, char** argv)
         fail(1, os.str());
       }
       locations.push_back(l);
+      site_points.push_back(q);
       lines.push_back(r.line);
     }
   }
   else
-    locations = random_locations(mesh, static_cast<std::size_t>(args.random), args.seed);
+  {
+    for(const Location& l : random_locations(mesh, static_cast<std::size_t>(args.random), args.seed))
+    {
+      Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+      locations.push_back(canonical_location(q, tree, mesh));
+      site_points.push_back(q);
+    }
+  }
   const double load = std::chrono::duration<double>(Clock::now() - t0).count();
 
   SV::Diagram_options options;
   if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-  std::vector<Point> final_sites;
-  try
+    try
   {
     try
     {
@@ -295,12 +325,12 @@ int run_main(int argc, char** argv)
         bo.dimension = args.dimension;
         CGAL::Biharmonic_embedding<Mesh> metric(*work, bo);
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
-        run(args, *work, metric, work_sites, options, load, embedding, insertion, final_sites);
+        run(args, *work, metric, work_sites, options, load, embedding, insertion, site_points);
       }
       else
       {
         SV::Euclidean_embedding<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, options, load, 0., insertion, final_sites);
+        run(args, *work, metric, work_sites, options, load, 0., insertion, site_points);
       }
     }
     catch(const SV::Coincident_sites_error& e)
@@ -318,7 +348,7 @@ int run_main(int argc, char** argv)
   {
     std::ofstream os(args.sites_out);
     if(!os) fail(4, "cannot open '" + args.sites_out + "' for writing");
-    SV::IO::write_sites_file(os, final_sites);
+    SV::IO::write_sites_file(os, site_points);
     if(!os) fail(4, "failed to write '" + args.sites_out + "'");
   }
   return 0;

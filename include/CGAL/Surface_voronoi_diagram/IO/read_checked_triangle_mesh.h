@@ -46,6 +46,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <cstdlib>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -655,8 +656,103 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
   return report;
 }
 
+
+namespace internal {
+
+// CGAL's text readers stop at "nan" or "inf" without saying where. To still name the
+// vertex, scan the vertex records of an OFF, OBJ or ASCII PLY file for a coordinate that
+// does not parse to a finite number. Returns false when nothing was found.
+inline bool find_bad_text_vertex(const std::string& filename, const std::string& ext,
+                                 std::size_t& vertex, std::string& token)
+{
+  std::ifstream in(filename);
+  if(!in) return false;
+  auto bad = [&](const std::string& t) {
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    return end != t.c_str() + t.size() || !std::isfinite(v);
+  };
+  auto split = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream ls(line.substr(0, line.find('#')));
+    std::string t;
+    while(ls >> t) out.push_back(t);
+    return out;
+  };
+  std::string line;
+  if(ext == "obj")
+  {
+    std::size_t index = 0;
+    while(std::getline(in, line))
+    {
+      const std::vector<std::string> t = split(line);
+      if(t.empty() || t[0] != "v") continue;
+      for(std::size_t k = 1; k < t.size() && k <= 3; ++k)
+        if(bad(t[k])) { vertex = index; token = t[k]; return true; }
+      ++index;
+    }
+    return false;
+  }
+  if(ext == "off")
+  {
+    std::vector<std::string> tokens;
+    while(tokens.empty() && std::getline(in, line)) tokens = split(line);
+    if(tokens.empty() || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0) return false;
+    tokens.erase(tokens.begin());
+    while(tokens.size() < 3 && std::getline(in, line))
+    {
+      const std::vector<std::string> more = split(line);
+      tokens.insert(tokens.end(), more.begin(), more.end());
+    }
+    if(tokens.empty()) return false;
+    const std::size_t nv = static_cast<std::size_t>(std::strtoull(tokens[0].c_str(), nullptr, 10));
+    std::size_t index = 0;
+    while(index < nv && std::getline(in, line))
+    {
+      const std::vector<std::string> t = split(line);
+      if(t.empty()) continue;
+      for(std::size_t k = 0; k < t.size() && k < 3; ++k)
+        if(bad(t[k])) { vertex = index; token = t[k]; return true; }
+      ++index;
+    }
+    return false;
+  }
+  if(ext == "ply")
+  {
+    std::size_t nv = 0, property = 0;
+    int xyz[3] = { -1, -1, -1 };
+    bool in_vertex = false, ascii = false;
+    while(std::getline(in, line))
+    {
+      const std::vector<std::string> t = split(line);
+      if(t.empty()) continue;
+      if(t[0] == "format") ascii = (t.size() > 1 && t[1] == "ascii");
+      else if(t[0] == "element") { in_vertex = (t.size() > 2 && t[1] == "vertex"); if(in_vertex) nv = std::strtoull(t[2].c_str(), nullptr, 10); }
+      else if(t[0] == "property" && in_vertex && t.size() >= 3)
+      {
+        const std::string& name = t.back();
+        if(name == "x") xyz[0] = int(property);
+        if(name == "y") xyz[1] = int(property);
+        if(name == "z") xyz[2] = int(property);
+        ++property;
+      }
+      else if(t[0] == "end_header") break;
+    }
+    if(!ascii) return false;
+    for(std::size_t index = 0; index < nv && std::getline(in, line); ++index)
+    {
+      const std::vector<std::string> t = split(line);
+      for(int c : xyz)
+        if(c >= 0 && std::size_t(c) < t.size() && bad(t[std::size_t(c)])) { vertex = index; token = t[std::size_t(c)]; return true; }
+    }
+  }
+  return false;
+}
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceVoronoiDiagramIO
-/// Reads a mesh file as a polygon soup, checks it and builds a triangle mesh
+/// Reads a triangle mesh a mesh file as a polygon soup, checks it and builds a triangle mesh
 /// with `build_checked_triangle_mesh()`.
 ///
 /// The format is chosen from the extension (case-insensitive): `.off`, `.obj`,
@@ -709,6 +805,11 @@ Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, Tria
     std::string format = ext;
     for(char& c : format)
       c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    std::size_t vertex = 0;
+    std::string token;
+    if(internal::find_bad_text_vertex(filename, ext, vertex, token))
+      throw Input_error(where + ": vertex " + std::to_string(vertex) + " has a non-finite or unreadable coordinate ('"
+                        + token.substr(0, 40) + "')");
     throw Input_error(where + ": cannot be read as " + format + " (malformed or unsupported content)");
   }
 
