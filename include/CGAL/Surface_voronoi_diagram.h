@@ -268,52 +268,57 @@ private:
     auto is_banned = [&](std::size_t site, std::size_t f) {
       return !banned.empty() && banned.count(std::uint64_t(site) * nf + f) != 0;
     };
-    auto is_blocked = [&](std::size_t f, int k) { return blocked(f, k); };
+    auto is_blocked = [this](std::size_t f, int k) { return blocked(f, k); };
     auto blocked_edge = [&](std::size_t e) { return m_blocked_edge[e] != 0; };
     const bool rvd = (m_options.candidates == Surface_voronoi::Candidate_selection::GLOBAL_NEAREST);
 
     m_stats = Surface_voronoi::Diagram_statistics();
     m_stats.sites = n;
     m_stats.surface_area = m_mesh.total_area;
+
+    // propagation (or the RVD's global candidates)
+    auto t0 = Clock::now();
+    typedef Surface_voronoi::internal::Propagation<TriangleMesh, Fields, decltype(is_blocked)> Propagation;
+    Propagation propagation(m_mesh, *m_fields, site_faces, is_blocked);
+    if(rvd)
+    {
+      if constexpr(Fields::is_exact())
+        Surface_voronoi::internal::global_nearest_candidates(m_mesh, *m_fields, n, !m_options.weights.empty(),
+                                                             propagation.candidates);
+      else
+        throw Surface_voronoi::Input_error("the restricted Voronoi diagram baseline needs an embedding metric");
+    }
+    else
+      propagation.run();
+    const std::vector<std::vector<Surface_voronoi::internal::Face_field> >& candidates = propagation.candidates;
+    auto t1 = Clock::now();
+
+    // cutting and stitching
+    std::vector<Surface_voronoi::internal::Face_cut> cuts(m_mesh.number_of_faces());
+    auto cut_faces = [&](const std::vector<std::size_t>* which) {
+      const std::size_t count = which ? which->size() : cuts.size();
+      for(std::size_t k = 0; k < count; ++k)
+      {
+        const std::size_t f = which ? (*which)[k] : k;
+        cuts[f] = candidates[f].empty() ? Surface_voronoi::internal::Face_cut()
+                                        : Surface_voronoi::internal::Face_cutter(candidates[f]).cut();
+      }
+    };
+    cut_faces(nullptr);
+    Surface_voronoi::internal::stitch(m_mesh, candidates, cuts, m_partition);
+    auto t2 = Clock::now();
+    m_stats.propagation_seconds = std::chrono::duration<double>(t1 - t0).count();
+    m_stats.cutting_seconds = std::chrono::duration<double>(t2 - t1).count();
+    m_stats.propagation_events = propagation.statistics.events;
+    m_stats.admitted_fields = propagation.statistics.admitted;
+
+    // connectivity check and repair: orphan pieces of a cell are banned for their site,
+    // and the propagation is re-run locally from the neighbours of the banned faces
     Surface_voronoi::internal::Cell_components cc;
+    std::vector<std::size_t> touched;
     for(std::size_t round = 0;; ++round)
     {
-      auto t0 = Clock::now();
-      Surface_voronoi::internal::Propagation_statistics ps;
-      if(rvd)
-      {
-        if constexpr(Fields::is_exact())
-          Surface_voronoi::internal::global_nearest_candidates(m_mesh, *m_fields, n, !m_options.weights.empty(), m_candidates);
-        else
-          throw Surface_voronoi::Input_error("the restricted Voronoi diagram baseline needs an embedding metric");
-      }
-      else
-        Surface_voronoi::internal::propagate(m_mesh, *m_fields, site_faces, is_blocked, is_banned, m_candidates, ps);
-      auto t1 = Clock::now();
-      std::vector<Surface_voronoi::internal::Face_cut> cuts(m_mesh.number_of_faces());
-      for(std::size_t f = 0; f < cuts.size(); ++f)
-        if(!m_candidates[f].empty())
-          cuts[f] = Surface_voronoi::internal::Face_cutter(m_candidates[f]).cut();
-      Surface_voronoi::internal::stitch(m_mesh, m_candidates, cuts, m_partition);
-      auto t2 = Clock::now();
       cc = Surface_voronoi::internal::cell_components(m_mesh, m_partition, n, blocked_edge);
-      auto t3 = Clock::now();
-
-      const double dp = std::chrono::duration<double>(t1 - t0).count();
-      const double dc = std::chrono::duration<double>(t2 - t1).count();
-      const double dr = std::chrono::duration<double>(t3 - t2).count();
-      if(round == 0)
-      {
-        m_stats.propagation_seconds = dp;
-        m_stats.cutting_seconds = dc;
-        m_stats.repair_seconds = dr;
-        m_stats.propagation_events = ps.events;
-        m_stats.admitted_fields = ps.admitted;
-      }
-      else
-        m_stats.repair_seconds += dp + dc + dr;
-
-      // orphans: every component but the principal one of each site
       std::size_t broken = 0;
       std::vector<std::size_t> orphan_components;
       for(std::size_t i = 0; i < n; ++i)
@@ -331,18 +336,25 @@ private:
         break;
       std::vector<std::uint8_t> is_orphan(cc.component_site.size(), 0);
       for(std::size_t c : orphan_components) is_orphan[c] = 1;
+      std::vector<std::size_t> dirty;
       for(std::size_t p = 0; p < m_partition.pieces.size(); ++p)
         if(is_orphan[cc.piece_component[p]])
         {
           const auto& piece = m_partition.pieces[p];
           banned.insert(std::uint64_t(piece.site) * nf + piece.face);
+          dirty.push_back(piece.face);
         }
+      std::sort(dirty.begin(), dirty.end());
+      dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+      propagation.repropagate(dirty, is_banned, touched);
+      cut_faces(&touched);
+      Surface_voronoi::internal::stitch(m_mesh, candidates, cuts, m_partition);
       m_stats.repair_rounds = round + 1;
       m_stats.banned_fields = banned.size();
     }
-    auto t4 = Clock::now();
+    m_candidates = std::move(propagation.candidates);
     summarize(cc);
-    m_stats.repair_seconds += std::chrono::duration<double>(Clock::now() - t4).count();
+    m_stats.repair_seconds = std::chrono::duration<double>(Clock::now() - t2).count();
   }
 
   // The component holding the site's own location; with weights a site may not own its
@@ -409,22 +421,10 @@ private:
 
     // neighbours: sites on both sides of a piece edge
     std::vector<std::set<std::size_t> > adj(n);
-    std::unordered_map<std::uint64_t, std::size_t> first;
-    const std::uint64_t nv = m_partition.vertices.size();
-    for(std::size_t p = 0; p < m_partition.pieces.size(); ++p)
-    {
-      const auto& piece = m_partition.pieces[p];
-      const std::size_t m = piece.vertices.size();
-      for(std::size_t k = 0; k < m; ++k)
-      {
-        std::uint64_t u = piece.vertices[k], w = piece.vertices[(k + 1) % m];
-        if(u > w) std::swap(u, w);
-        auto r = first.emplace(u * nv + w, p);
-        if(r.second) continue;
-        const std::size_t a = m_partition.pieces[r.first->second].site, b = piece.site;
-        if(a != b && a != no_site && b != no_site) { adj[a].insert(b); adj[b].insert(a); }
-      }
-    }
+    Surface_voronoi::internal::for_each_piece_adjacency(m_mesh, m_partition, [&](std::size_t p, std::size_t q, std::size_t) {
+      const std::size_t a = m_partition.pieces[p].site, b = m_partition.pieces[q].site;
+      if(a != b && a != no_site && b != no_site) { adj[a].insert(b); adj[b].insert(a); }
+    });
     m_neighbors.assign(n, std::vector<std::size_t>());
     for(std::size_t i = 0; i < n; ++i) m_neighbors[i].assign(adj[i].begin(), adj[i].end());
   }

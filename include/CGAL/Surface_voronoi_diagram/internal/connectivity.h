@@ -13,12 +13,47 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
+
+/// Calls `adjacent(p, q, e)` once for every pair of pieces sharing a piece edge, where `e`
+/// is the mesh edge the shared edge lies on, or `no_site` inside a face. Pieces only meet
+/// within a face or across one of its edges, so the search stays local.
+template <class TriangleMesh, class Callback>
+void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, Callback adjacent)
+{
+  auto has_edge = [&](std::size_t q, std::size_t u, std::size_t w) {
+    const std::vector<std::size_t>& v = partition.pieces[q].vertices;
+    for(std::size_t j = 0; j < v.size(); ++j)
+      if(v[j] == u && v[(j + 1) % v.size()] == w) return true;
+    return false;
+  };
+  const std::size_t nf = mesh.number_of_faces();
+  for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t p = partition.face_begin[f]; p < partition.face_begin[f + 1]; ++p)
+    {
+      const std::vector<std::size_t>& v = partition.pieces[p].vertices;
+      for(std::size_t j = 0; j < v.size(); ++j)
+      {
+        const std::size_t u = v[j], w = v[(j + 1) % v.size()];
+        // the piece across (u, w) owns (w, u): in the same face, or across one of its edges;
+        // each pair is reported once, from its lower piece index
+        bool found = false;
+        for(std::size_t q = p + 1; q < partition.face_begin[f + 1] && !found; ++q)
+          if(has_edge(q, w, u)) { adjacent(p, q, no_site); found = true; }
+        for(int k = 0; k < 3 && !found; ++k)
+        {
+          const std::size_t g = mesh.neighbors[f][k];
+          if(g == Indexed_mesh<TriangleMesh>::none || g < f) continue;
+          for(std::size_t q = partition.face_begin[g]; q < partition.face_begin[g + 1] && !found; ++q)
+            if(has_edge(q, w, u)) { adjacent(p, q, mesh.edges[f][k]); found = true; }
+        }
+      }
+    }
+}
 
 struct Cell_components
 {
@@ -41,44 +76,12 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
     while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
     return x;
   };
-  auto unite = [&](std::size_t a, std::size_t b) {
-    a = find(a); b = find(b);
+  for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
+    if(partition.pieces[p].site != partition.pieces[q].site) return;
+    if(e != no_site && blocked_edge(e)) return;
+    std::size_t a = find(p), b = find(q);
     if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-  };
-  auto on_blocked_edge = [&](std::size_t u, std::size_t w, std::size_t f) {
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t e = mesh.edges[f][k];
-      if(!blocked_edge(e)) continue;
-      auto on = [&](std::size_t id) {
-        const Partition::Vertex& v = partition.vertices[id];
-        if(v.kind == Partition::AT_CORNER) return v.element == mesh.edge_vertices[e][0] || v.element == mesh.edge_vertices[e][1];
-        return v.kind == Partition::ON_EDGE && v.element == e;
-      };
-      if(on(u) && on(w)) return true;
-    }
-    return false;
-  };
-
-  std::unordered_map<std::uint64_t, std::size_t> first_piece;
-  first_piece.reserve(np * 2);
-  const std::uint64_t nv = partition.vertices.size();
-  for(std::size_t p = 0; p < np; ++p)
-  {
-    const Partition::Piece& piece = partition.pieces[p];
-    const std::size_t n = piece.vertices.size();
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      std::uint64_t u = piece.vertices[k], w = piece.vertices[(k + 1) % n];
-      if(u > w) std::swap(u, w);
-      auto r = first_piece.emplace(u * nv + w, p);
-      if(r.second) continue;
-      const std::size_t q = r.first->second;
-      if(partition.pieces[q].site == piece.site && partition.pieces[q].face != piece.face
-         && !on_blocked_edge(static_cast<std::size_t>(u), static_cast<std::size_t>(w), piece.face))
-        unite(p, q);
-    }
-  }
+  });
 
   Cell_components cc;
   cc.piece_component.assign(np, 0);

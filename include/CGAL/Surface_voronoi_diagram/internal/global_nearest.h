@@ -110,17 +110,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
   }
 
   for(std::vector<Face_field>& list : candidates)
-  {
-    std::vector<Face_field> kept;
-    for(const Face_field& x : list)
-    {
-      bool dominated = false;
-      for(const Face_field& b : list)
-        if(b.site != x.site && dominates(b, x)) { dominated = true; break; }
-      if(!dominated) kept.push_back(x);
-    }
-    list.swap(kept);
-  }
+    clean_candidate_list(list);
 }
 
 } // namespace internal

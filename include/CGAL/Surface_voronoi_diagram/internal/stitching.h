@@ -27,7 +27,6 @@
 #include <functional>
 #include <map>
 #include <numeric>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -100,21 +99,6 @@ inline std::array<double, 3> vector_area_term(const std::array<double, 3>& p, co
 
 namespace stitching_detail {
 
-struct Position_hash
-{
-  std::size_t operator()(const std::array<double, 3>& p) const
-  {
-    std::size_t h = 0;
-    for(double x : p)
-    {
-      std::uint64_t b;
-      std::memcpy(&b, &x, sizeof b);
-      h ^= std::hash<std::uint64_t>()(b) + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    }
-    return h;
-  }
-};
-
 inline bool collinear_polygon(const Partition& out, const std::vector<std::size_t>& ids)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
@@ -134,46 +118,82 @@ inline bool collinear_polygon(const Partition& out, const std::vector<std::size_
 
 } // namespace stitching_detail
 
-inline void weld_coincident_positions(Partition& out)
+inline double piece_area(const Partition& out, const std::vector<std::size_t>& ids)
+{
+  std::array<double, 3> s = {{ 0., 0., 0. }};
+  const std::array<double, 3>& o = out.vertices[ids[0]].point;
+  for(std::size_t k = 1; k + 1 < ids.size(); ++k)
+  {
+    const std::array<double, 3>& a = out.vertices[ids[k]].point;
+    const std::array<double, 3>& b = out.vertices[ids[k + 1]].point;
+    const std::array<double, 3> u = {{ a[0] - o[0], a[1] - o[1], a[2] - o[2] }};
+    const std::array<double, 3> w = {{ b[0] - o[0], b[1] - o[1], b[2] - o[2] }};
+    const std::array<double, 3> c = {{ u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] }};
+    for(int j = 0; j < 3; ++j) s[j] += c[j];
+  }
+  return 0.5 * std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+}
+
+template <class TriangleMesh>
+void weld_coincident_positions(Partition& out, const Indexed_mesh<TriangleMesh>& mesh)
 {
   using namespace stitching_detail;
-  std::unordered_map<std::array<double, 3>, std::size_t, Position_hash> first;
+  // Two vertices can only coincide if some face uses both, so compare within each face.
   std::vector<std::size_t> rep(out.vertices.size());
   std::iota(rep.begin(), rep.end(), std::size_t(0));
+  auto find = [&](std::size_t x) {
+    while(rep[x] != x) { rep[x] = rep[rep[x]]; x = rep[x]; }
+    return x;
+  };
   bool any = false;
-  for(const Partition::Piece& p : out.pieces)
-    for(std::size_t id : p.vertices)
-    {
-      auto r = first.emplace(out.vertices[id].point, id);
-      if(!r.second && r.first->second != id)
+  std::vector<std::size_t> used;
+  const std::size_t nf = out.face_begin.size() - 1;
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    used.clear();
+    for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+      used.insert(used.end(), out.pieces[p].vertices.begin(), out.pieces[p].vertices.end());
+    std::sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
+      return out.vertices[a].point < out.vertices[b].point || (out.vertices[a].point == out.vertices[b].point && a < b);
+    });
+    for(std::size_t k = 1; k < used.size(); ++k)
+      if(used[k] != used[k - 1] && out.vertices[used[k]].point == out.vertices[used[k - 1]].point)
       {
-        rep[id] = r.first->second;
+        // the survivor keeps the most specific location: a corner, else an edge point
+        const std::size_t a = find(used[k - 1]), b = find(used[k]);
+        if(a == b) continue;
+        const bool a_first = out.vertices[a].kind < out.vertices[b].kind
+                             || (out.vertices[a].kind == out.vertices[b].kind && a < b);
+        if(a_first) rep[b] = a; else rep[a] = b;
         any = true;
       }
-    }
+  }
   if(any)
   {
     for(std::size_t id = 0; id < rep.size(); ++id)
-      if(rep[id] != id) ++out.welded_vertices;
+      if(find(id) != id) ++out.welded_vertices;
     for(Partition::Piece& p : out.pieces)
     {
       std::vector<std::size_t> cleaned;
       for(std::size_t id : p.vertices)
       {
-        const std::size_t r = rep[id];
+        const std::size_t r = find(id);
         if(cleaned.empty() || cleaned.back() != r) cleaned.push_back(r);
       }
       while(cleaned.size() > 1 && cleaned.front() == cleaned.back()) cleaned.pop_back();
       p.vertices.swap(cleaned);
     }
   }
+  for(Partition::Piece& p : out.pieces)
+    p.area = p.vertices.size() < 3 ? 0. : piece_area(out, p.vertices);
 
   // collinear pieces: their long side's neighbour gets the middle vertices
   std::vector<std::size_t> degenerate;
   for(std::size_t k = 0; k < out.pieces.size(); ++k)
   {
     const Partition::Piece& p = out.pieces[k];
-    if(p.vertices.size() < 3 || collinear_polygon(out, p.vertices))
+    // only a piece without area in double can be exactly collinear
+    if(p.vertices.size() < 3 || (p.area <= 1e-12 * mesh.face_areas[p.face] && collinear_polygon(out, p.vertices)))
       degenerate.push_back(k);
   }
   if(degenerate.empty()) return;
@@ -237,7 +257,6 @@ inline void weld_coincident_positions(Partition& out)
   for(std::size_t k = 0; k < out.pieces.size(); ++k)
     if(!dropped[k]) kept.push_back(std::move(out.pieces[k]));
   out.pieces.swap(kept);
-  const std::size_t nf = out.face_begin.size() - 1;
   out.face_begin.assign(nf + 1, out.pieces.size());
   for(std::size_t p = out.pieces.size(); p-- > 0;)
     out.face_begin[out.pieces[p].face] = p;
@@ -255,7 +274,6 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
   using namespace stitching_detail;
   const std::size_t nf = mesh.number_of_faces();
   out = Partition();
-  std::unordered_map<Key, std::size_t, Key_hash> ids;
   std::vector<Origin> origins;
 
   auto site_of = [&](std::size_t f, std::uint32_t c) { return candidates[f][c].site; };
@@ -278,10 +296,49 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
     }
     }
   };
-  auto id_of = [&](const Key& k, std::size_t f) {
-    auto r = ids.emplace(k, origins.size());
-    if(r.second) origins.push_back(Origin{ k, f });
-    return r.first->second;
+  // Vertex ids without hashing: corners by mesh vertex; bisector crossings on the edge's
+  // faces (the one processed first owns them); triple points inside their face.
+  std::vector<std::size_t> corner_id(mesh.number_of_vertices(), no_site);
+  struct Edge_entry { std::size_t edge; std::uint32_t lo, hi; std::size_t id; };
+  std::vector<Edge_entry> edge_entries;            // grouped by face, in face order
+  std::vector<std::size_t> edge_entries_begin(nf + 1, 0);
+  std::size_t triple_begin = 0;                    // triple points of the current face start here
+  auto id_of = [&](const Key& k, std::size_t f) -> std::size_t {
+    if(k.kind == 0)
+    {
+      std::size_t& id = corner_id[static_cast<std::size_t>(k.a)];
+      if(id == no_site) { id = origins.size(); origins.push_back(Origin{ k, f }); }
+      return id;
+    }
+    if(k.kind == 1)
+    {
+      const std::size_t e = static_cast<std::size_t>(k.a);
+      auto find_in = [&](std::size_t begin, std::size_t end) -> std::size_t {
+        for(std::size_t j = begin; j < end; ++j)
+          if(edge_entries[j].edge == e && edge_entries[j].lo == k.b && edge_entries[j].hi == k.c) return edge_entries[j].id;
+        return no_site;
+      };
+      for(int l = 0; l < 3; ++l)
+        if(mesh.edges[f][l] == e)
+        {
+          const std::size_t g = mesh.neighbors[f][l];
+          if(g != Indexed_mesh<TriangleMesh>::none && g < f)
+          {
+            const std::size_t id = find_in(edge_entries_begin[g], edge_entries_begin[g + 1]);
+            if(id != no_site) return id;
+          }
+        }
+      std::size_t id = find_in(edge_entries_begin[f], edge_entries.size());
+      if(id != no_site) return id;
+      id = origins.size();
+      origins.push_back(Origin{ k, f });
+      edge_entries.push_back(Edge_entry{ e, k.b, k.c, id });
+      return id;
+    }
+    for(std::size_t id = triple_begin; id < origins.size(); ++id)
+      if(origins[id].key == k) return id;
+    origins.push_back(Origin{ k, f });
+    return origins.size() - 1;
   };
 
   // 1. pieces with vertex ids; faces nobody reached are one piece of no site
@@ -290,6 +347,8 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
   for(std::size_t f = 0; f < nf; ++f)
   {
     out.face_begin[f] = out.pieces.size();
+    edge_entries_begin[f] = edge_entries.size();
+    triple_begin = origins.size();
     face_degenerate[f] = cuts[f].degenerate;
     if(candidates[f].empty())
     {
@@ -309,6 +368,7 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
     }
   }
   out.face_begin[nf] = out.pieces.size();
+  edge_entries_begin[nf] = edge_entries.size();
 
   // 2. one position per key
   auto values_of = [&](std::size_t f, std::uint32_t site) -> const double* {
@@ -558,24 +618,8 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
   // 5. features smaller than double precision: vertices whose computed positions are
   // bit-identical are one vertex, and pieces left without area are removed (a piece whose
   // corners are collinear hands its middle vertices to the pieces across its long side)
-  weld_coincident_positions(out);
+  weld_coincident_positions(out, mesh);
 
-  // 6. areas
-  for(Partition::Piece& p : out.pieces)
-  {
-    std::array<double, 3> s = {{ 0., 0., 0. }};
-    const std::array<double, 3>& o = out.vertices[p.vertices[0]].point;
-    for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
-    {
-      const std::array<double, 3>& a = out.vertices[p.vertices[k]].point;
-      const std::array<double, 3>& b = out.vertices[p.vertices[k + 1]].point;
-      const std::array<double, 3> u = {{ a[0] - o[0], a[1] - o[1], a[2] - o[2] }};
-      const std::array<double, 3> w = {{ b[0] - o[0], b[1] - o[1], b[2] - o[2] }};
-      const std::array<double, 3> c = vector_area_term(u, w);
-      for(int j = 0; j < 3; ++j) s[j] += c[j];
-    }
-    p.area = 0.5 * std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-  }
 }
 
 } // namespace internal
