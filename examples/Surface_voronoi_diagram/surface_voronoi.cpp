@@ -203,6 +203,7 @@ void report(const Arguments& args, const Diagram& vd, double load, double embedd
             << "load: " << load << "\n"
             << "insertion: " << insertion << "\n"
             << "embedding: " << embedding << "\n"
+            << "setup: " << s.setup_seconds << "\n"
             << "propagation: " << s.propagation_seconds << "\n"
             << "cutting: " << s.cutting_seconds << "\n"
             << "repair: " << s.repair_seconds << "\n"

@@ -93,6 +93,7 @@ public:
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     using CGAL::parameters::is_default_parameter;
+    const auto setup_start = std::chrono::steady_clock::now();
     m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_const_property_map(CGAL::vertex_point, tm));
     m_mesh.build(tm, m_vpm);
@@ -135,7 +136,9 @@ public:
     Surface_voronoi::internal::check_distinct_sites(m_mesh, m_sites);
 
     m_fields.reset(new Fields(m_mesh, metric, m_sites, tm));
+    const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
     compute();
+    m_stats.setup_seconds = setup;
   }
 
   // The diagram refers to its own members internally: neither copied nor moved.
@@ -420,13 +423,16 @@ private:
         }
 
     // neighbours: sites on both sides of a piece edge
-    std::vector<std::set<std::size_t> > adj(n);
+    m_neighbors.assign(n, std::vector<std::size_t>());
     Surface_voronoi::internal::for_each_piece_adjacency(m_mesh, m_partition, [&](std::size_t p, std::size_t q, std::size_t) {
       const std::size_t a = m_partition.pieces[p].site, b = m_partition.pieces[q].site;
-      if(a != b && a != no_site && b != no_site) { adj[a].insert(b); adj[b].insert(a); }
+      if(a != b && a != no_site && b != no_site) { m_neighbors[a].push_back(b); m_neighbors[b].push_back(a); }
     });
-    m_neighbors.assign(n, std::vector<std::size_t>());
-    for(std::size_t i = 0; i < n; ++i) m_neighbors[i].assign(adj[i].begin(), adj[i].end());
+    for(std::vector<std::size_t>& list : m_neighbors)
+    {
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
   }
 
   const TriangleMesh* m_tm;

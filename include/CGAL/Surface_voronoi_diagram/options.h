@@ -66,9 +66,10 @@ struct Diagram_statistics
   std::size_t max_candidates_per_face = 0;
   std::size_t welded_vertices = 0;
   std::size_t inserted_vertices = 0;
+  double setup_seconds = 0;                 ///< mesh copy, checks, site location, metric read-out
   double propagation_seconds = 0;
   double cutting_seconds = 0;
-  double repair_seconds = 0;
+  double repair_seconds = 0;                ///< connectivity check, repair rounds and per-site summary
 };
 
 } // namespace Surface_voronoi

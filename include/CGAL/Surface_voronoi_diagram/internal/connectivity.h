@@ -25,6 +25,11 @@ namespace internal {
 template <class TriangleMesh, class Callback>
 void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, Callback adjacent)
 {
+  auto on_edge = [&](std::size_t id, std::size_t e) {
+    const Partition::Vertex& v = partition.vertices[id];
+    if(v.kind == Partition::AT_CORNER) return v.element == mesh.edge_vertices[e][0] || v.element == mesh.edge_vertices[e][1];
+    return v.kind == Partition::ON_EDGE && v.element == e;
+  };
   auto has_edge = [&](std::size_t q, std::size_t u, std::size_t w) {
     const std::vector<std::size_t>& v = partition.pieces[q].vertices;
     for(std::size_t j = 0; j < v.size(); ++j)
@@ -39,17 +44,40 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
       for(std::size_t j = 0; j < v.size(); ++j)
       {
         const std::size_t u = v[j], w = v[(j + 1) % v.size()];
-        // the piece across (u, w) owns (w, u): in the same face, or across one of its edges;
-        // each pair is reported once, from its lower piece index
+        // The piece across (u, w) owns (w, u): across the mesh edge both lie on, else in the
+        // same face. Each pair is reported once, from its lower piece index; when the guided
+        // search finds nothing (a border, or a vertex whose location is ambiguous), every
+        // candidate piece is tried.
+        int local = -1;
+        for(int k = 0; k < 3 && local < 0; ++k)
+          if(on_edge(u, mesh.edges[f][k]) && on_edge(w, mesh.edges[f][k])) local = k;
         bool found = false;
-        for(std::size_t q = p + 1; q < partition.face_begin[f + 1] && !found; ++q)
-          if(has_edge(q, w, u)) { adjacent(p, q, no_site); found = true; }
+        auto search_face = [&](std::size_t q_begin, std::size_t q_end, std::size_t e) {
+          for(std::size_t q = q_begin; q < q_end && !found; ++q)
+            if(has_edge(q, w, u))
+            {
+              found = true;
+              if(q > p) adjacent(p, q, e);
+            }
+        };
+        if(local >= 0)
+        {
+          const std::size_t g = mesh.neighbors[f][local];
+          if(g != Indexed_mesh<TriangleMesh>::none)
+            search_face(partition.face_begin[g], partition.face_begin[g + 1], mesh.edges[f][local]);
+          if(found) continue;
+        }
+        else
+        {
+          search_face(partition.face_begin[f], partition.face_begin[f + 1], no_site);
+          if(found) continue;
+        }
+        search_face(partition.face_begin[f], partition.face_begin[f + 1], no_site);
         for(int k = 0; k < 3 && !found; ++k)
         {
           const std::size_t g = mesh.neighbors[f][k];
-          if(g == Indexed_mesh<TriangleMesh>::none || g < f) continue;
-          for(std::size_t q = partition.face_begin[g]; q < partition.face_begin[g + 1] && !found; ++q)
-            if(has_edge(q, w, u)) { adjacent(p, q, mesh.edges[f][k]); found = true; }
+          if(g != Indexed_mesh<TriangleMesh>::none)
+            search_face(partition.face_begin[g], partition.face_begin[g + 1], mesh.edges[f][k]);
         }
       }
     }

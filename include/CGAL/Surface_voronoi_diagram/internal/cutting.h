@@ -92,6 +92,17 @@ public:
   {
     Face_cut result;
     const std::uint32_t n = static_cast<std::uint32_t>(m_c.size());
+    if(n == 1)
+    {
+      // most faces: one candidate owns the whole triangle
+      Raw_piece piece;
+      piece.candidate = 0;
+      piece.vertices = { Piece_vertex{ Piece_vertex::CORNER, 0, 0, 0 }, Piece_vertex{ Piece_vertex::CORNER, 1, 0, 0 },
+                         Piece_vertex{ Piece_vertex::CORNER, 2, 0, 0 } };
+      piece.supports = { Piece_edge_support{ true, 0, 0 }, Piece_edge_support{ true, 1, 0 }, Piece_edge_support{ true, 2, 0 } };
+      result.pieces.push_back(std::move(piece));
+      return result;
+    }
     for(std::uint32_t i = 0; i < n; ++i)
     {
       Raw_piece piece;

@@ -219,6 +219,10 @@ private:
     e.face = static_cast<std::uint32_t>(f);
     for(int k = 0; k < 3; ++k)
       e.value[k] = m_fields.value(site, m_mesh.triangles[f][k]);
+    // lists only grow: a field dominated now stays dominated, so do not queue it
+    const Face_field x = { e.site, e.value };
+    for(const Face_field& b : candidates[f])
+      if(dominates(b, x)) { ++statistics.pruned; return; }
     e.key = (std::min)((std::min)(e.value[0], e.value[1]), e.value[2]);
     m_queue.push(e);
   }

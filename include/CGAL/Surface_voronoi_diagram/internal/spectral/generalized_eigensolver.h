@@ -136,23 +136,38 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     want = (std::min<Eigen::Index>)(want, n - found - 1);
     if(want < 1)
       break;
-    const Eigen::Index ncv = (std::min)(n, (std::max<Eigen::Index>)(4 * want, 40));
     op.set_deflation(vectors, values);
-    Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, want, ncv, sigma);
-    solver.init();
-    const Eigen::Index converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tolerance,
-                                                  Spectra::SortRule::SmallestAlge);
-    r.iterations += static_cast<long>(solver.num_iterations());
-    r.operations += static_cast<long>(solver.num_operations());
-    ++r.rounds;
-    if(solver.info() != Spectra::CompInfo::Successful || converged < want)
-      throw Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
-                            + std::to_string(want) + " eigenpairs after " + std::to_string(solver.num_iterations())
-                            + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
-    Eigen::VectorXd new_values = solver.eigenvalues();
-    Eigen::MatrixXd new_vectors = solver.eigenvectors();
-    if(!new_values.allFinite() || !new_vectors.allFinite())
-      throw Numerical_error("the eigen-solver returned non-finite values");
+    auto solve = [&](Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
+      ncv = (std::min)(n, ncv);
+      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, want, ncv, sigma);
+      solver.init();
+      const Eigen::Index converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol,
+                                                    Spectra::SortRule::SmallestAlge);
+      r.iterations += static_cast<long>(solver.num_iterations());
+      r.operations += static_cast<long>(solver.num_operations());
+      ++r.rounds;
+      if(solver.info() != Spectra::CompInfo::Successful || converged < want)
+        throw Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
+                              + std::to_string(want) + " eigenpairs after " + std::to_string(solver.num_iterations())
+                              + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
+      new_values = solver.eigenvalues();
+      new_vectors = solver.eigenvectors();
+      if(!new_values.allFinite() || !new_vectors.allFinite())
+        throw Numerical_error("the eigen-solver returned non-finite values");
+    };
+    Eigen::VectorXd new_values;
+    Eigen::MatrixXd new_vectors;
+    const Eigen::Index accurate_ncv = (std::max<Eigen::Index>)(4 * want, 40);
+    if(round == 0)
+      solve(accurate_ncv, tolerance, new_values, new_vectors);
+    else
+    {
+      // a cheap look for anything missed; solved accurately only if something shows up
+      solve((std::max<Eigen::Index>)(2 * want + 1, 16), (std::max)(tolerance, 1e-6), new_values, new_vectors);
+      const double limit = values[(std::min)(nev, found) - 1];
+      if((new_values.array() < limit * (1 - 1e-6)).any())
+        solve(accurate_ncv, tolerance, new_values, new_vectors);
+    }
 
     const double threshold = (found >= nev) ? values[nev - 1] : std::numeric_limits<double>::infinity();
     // Only eigenpairs below the current nev-th one matter; the deflated zero eigenvalues
