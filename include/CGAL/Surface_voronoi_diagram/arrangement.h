@@ -41,6 +41,8 @@ Value site_value(std::size_t site)
 ///
 /// \tparam Diagram a `CGAL::Surface_voronoi_diagram`
 /// \tparam PolygonMesh a model of `MutableFaceGraph`
+/// \param diagram the diagram
+/// \param out the output mesh; the arrangement is added to it
 /// \param np optional named parameters:
 ///   - `vertex_point_map`: the output's point map (default: internal `vertex_point`)
 ///   - `face_patch_map`: writable, output face -> site index (`-1` converted to the value

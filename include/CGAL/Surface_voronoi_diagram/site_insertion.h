@@ -51,6 +51,8 @@ struct Site_insertion_result
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// Inserts the sites (face locations of `tm`) as vertices of a copy of `tm`.
+/// \param tm the mesh; it is copied, never modified
+/// \param sites a range of `Polygon_mesh_processing::Face_location`s of `tm`
 /// \param np optional `vertex_point_map` of `tm`
 template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Site_insertion_result<TriangleMesh,

@@ -769,7 +769,7 @@ inline bool find_bad_text_vertex(const std::string& filename, const std::string&
 /// \throws CGAL::Surface_voronoi::Input_error when the extension is not one of the
 ///         above, the file cannot be opened or parsed, or the soup fails the
 ///         checks of `build_checked_triangle_mesh()`; the message starts with
-///         `mesh file '<filename>'`
+///         `mesh file 'FILE'`
 /// \returns what was done to the soup (triangulation, re-orientation, isolated points)
 template <class TriangleMesh>
 Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, TriangleMesh& mesh)

@@ -251,7 +251,7 @@ inline std::vector<Site_record> read_sites_file(std::istream& in)
 /// \param filename the file to read
 /// \pre as `read_sites_file(std::istream&)`
 /// \throws CGAL::Surface_voronoi::Input_error if the file cannot be opened
-///         (`cannot open sites file '<filename>'`) or breaks the grammar
+///         (`cannot open sites file 'FILE'`) or breaks the grammar
 inline std::vector<Site_record> read_sites_file(const std::string& filename)
 {
   // Binary mode: line ends are handled by the grammar, identically on every platform.
