@@ -14,6 +14,7 @@
 #include <boost/graph/filtered_graph.hpp>
 #include <boost/property_map/function_property_map.hpp>
 
+#include <map>
 #include <unordered_map>
 
 using namespace svd_test;
@@ -191,4 +192,32 @@ TEST_CASE("arrangement: Boost.Graph connected_components and dijkstra run on it"
                                  boost::distance_map(boost::make_iterator_property_map(d.begin(), get(boost::vertex_index, p)))
                                    .weight_map(elen));
   CHECK(*std::max_element(d.begin(), d.end()) == Approx(max_d).epsilon(1e-9));
+}
+
+TEST_CASE("arrangement: a Polyhedron_3 without ids, as input and as output", "[arrangement]")
+{
+  typedef CGAL::Polyhedron_3<K> Plain;
+  Mesh m;
+  GEN::make_icosphere(m, 3, 1.0);
+  Plain p;
+  CGAL::copy_face_graph(m, p);
+  const auto sites_m = area_uniform_locations(m, 40, 9);
+  std::vector<Point> sites;
+  for(const auto& l : sites_m) sites.push_back(point_of(l, m));
+  SV::Euclidean_embedding<Plain> ep(p);
+  SV::Euclidean_embedding<Mesh> em(m);
+  CGAL::Surface_voronoi_diagram<Plain, SV::Euclidean_embedding<Plain> > dp(p, ep, sites);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > dm(m, em, sites);
+  check_invariants(dm);
+  for(std::size_t i = 0; i < sites.size(); ++i)
+  {
+    CHECK(dp.cell_area(i) == Approx(dm.cell_area(i)).epsilon(1e-9));
+    CHECK(dp.number_of_pieces(i) == 1);
+  }
+  Plain out;
+  std::map<Plain::Face_handle, int> site;
+  SV::make_arrangement(dp, out, CGAL::parameters::face_patch_map(boost::make_assoc_property_map(site)));
+  CHECK(CGAL::is_valid_polygon_mesh(out));
+  CHECK(CGAL::is_closed(out));
+  CHECK(site.size() == num_faces(out));
 }
