@@ -5,7 +5,7 @@
 //
 //   surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
-//                   [--max-site-distance R] [--stats]
+//                   [--max-site-distance R] [--breaklines FILE] [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site: a warning says so),
 // 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
@@ -56,7 +56,7 @@ struct Failure
 
 struct Arguments
 {
-  std::string mesh, sites, output, sites_out, metric = "biharmonic";
+  std::string mesh, sites, output, sites_out, breaklines, metric = "biharmonic";
   long long random = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
@@ -67,7 +67,7 @@ struct Arguments
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric biharmonic|euclidean|rvd]\n"
   "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -113,6 +113,7 @@ Arguments parse(int argc, char** argv)
       if(a.max_site_distance < 0) fail(2, "--max-site-distance must not be negative");
     }
     else if(arg == "--stats") a.stats = true;
+    else if(arg == "--breaklines") a.breaklines = value();
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
     else if(a.mesh.empty()) a.mesh = arg;
     else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
@@ -216,7 +217,9 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
          const SV::Diagram_options& options, double load, double embedding, double insertion,
          const std::vector<Point>& site_points)
 {
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options);
+  const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options,
+                                                 CGAL::parameters::edge_is_constrained_map(breakline));
   const auto t0 = std::chrono::steady_clock::now();
   if(!args.output.empty())
   {
@@ -234,8 +237,33 @@ int run_main(int argc, char** argv)
   typedef std::chrono::steady_clock Clock;
   const auto t0 = Clock::now();
   Mesh mesh;
-  try { SV::IO::read_checked_triangle_mesh(args.mesh, mesh); }
+  SV::IO::Mesh_reading_report reading;
+  try { reading = SV::IO::read_checked_triangle_mesh(args.mesh, mesh); }
   catch(const SV::Input_error& e) { fail(1, e.what()); }
+
+  // breaklines: pairs of vertex indices of the file, each an edge of the mesh
+  auto breakline = mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+  if(!args.breaklines.empty())
+  {
+    std::ifstream in(args.breaklines);
+    if(!in) fail(1, "cannot open breaklines file '" + args.breaklines + "'");
+    std::vector<SV::IO::Index_pair_record> pairs;
+    try { pairs = SV::IO::parse_index_pairs(in); }
+    catch(const SV::Input_error& e) { fail(1, e.what()); }
+    for(const SV::IO::Index_pair_record& r : pairs)
+    {
+      const std::string where = "breaklines file line " + std::to_string(r.line) + ": ";
+      if(r.first >= reading.mesh_vertex_of_point.size() || r.second >= reading.mesh_vertex_of_point.size())
+        fail(1, where + "vertex index out of range (the mesh has " + std::to_string(reading.mesh_vertex_of_point.size()) + " vertices)");
+      const std::size_t a = reading.mesh_vertex_of_point[r.first], b = reading.mesh_vertex_of_point[r.second];
+      if(a == std::size_t(-1) || b == std::size_t(-1))
+        fail(1, where + "vertex " + std::to_string(a == std::size_t(-1) ? r.first : r.second) + " belongs to no face");
+      const auto h = CGAL::halfedge(Mesh::Vertex_index(Mesh::size_type(a)), Mesh::Vertex_index(Mesh::size_type(b)), mesh);
+      if(!h.second)
+        fail(1, where + "vertices " + std::to_string(r.first) + " and " + std::to_string(r.second) + " are not joined by an edge");
+      breakline[edge(h.first, mesh)] = true;
+    }
+  }
 
   // sites as surface locations, remembering the sites file's lines for error messages
   std::vector<std::size_t> lines;
@@ -250,6 +278,7 @@ int run_main(int argc, char** argv)
   CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
   tree.accelerate_distance_queries();
   std::vector<Point> site_points;
+  std::vector<double> weights;
   if(!args.sites.empty())
   {
     std::vector<SV::IO::Site_record> records;
@@ -259,8 +288,6 @@ int run_main(int argc, char** argv)
     const double limit = args.max_site_distance * diagonal;
     for(const SV::IO::Site_record& r : records)
     {
-      if(r.has_weight && r.weight != 0)
-        fail(1, "sites file line " + std::to_string(r.line) + ": non-zero weights are not supported yet (power diagrams)");
       const Point p(r.x, r.y, r.z);
       Point q = p;
       const Location l = canonical_location(q, tree, mesh);
@@ -276,6 +303,7 @@ int run_main(int argc, char** argv)
       locations.push_back(l);
       site_points.push_back(q);
       lines.push_back(r.line);
+      weights.push_back(r.has_weight ? r.weight : 0.);
     }
   }
   else
@@ -291,6 +319,8 @@ int run_main(int argc, char** argv)
 
   SV::Diagram_options options;
   if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+  if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
+    options.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w
     try
   {
     try
@@ -317,6 +347,18 @@ int run_main(int argc, char** argv)
             if(source(g, inserted.mesh) == v) b[k] = 1;
           work_sites.push_back(Location(f, b));
         }
+        // an edge of the augmented mesh between two input faces lies on their common edge
+        auto augmented_breakline = inserted.mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+        if(!args.breaklines.empty())
+          for(auto e : edges(inserted.mesh))
+          {
+            const auto h = halfedge(e, inserted.mesh), o = opposite(h, inserted.mesh);
+            if(is_border(h, inserted.mesh) || is_border(o, inserted.mesh)) continue;
+            const auto f1 = inserted.input_face[face(h, inserted.mesh)], f2 = inserted.input_face[face(o, inserted.mesh)];
+            if(f1 == f2) continue;
+            for(auto g : CGAL::halfedges_around_face(halfedge(f1, mesh), mesh))
+              if(face(opposite(g, mesh), mesh) == f2 && breakline[edge(g, mesh)]) augmented_breakline[e] = true;
+          }
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
       const auto te = Clock::now();

@@ -111,6 +111,9 @@ public:
         for(int k = 0; k < 3; ++k, h = next(h, tm))
           if(get(ecm, edge(h, tm))) m_blocked_edge[m_mesh.edges[f][k]] = 1;
       }
+      for(std::size_t e = 0; e < m_mesh.number_of_edges(); ++e)
+        if(m_blocked_edge[e])
+          m_corner_edge[m_mesh.edge_vertices[e][0] * m_mesh.number_of_vertices() + m_mesh.edge_vertices[e][1]] = e;
     }
 
     // sites
@@ -210,6 +213,30 @@ public:
   face_descriptor face_handle(std::size_t face_index) const { return m_mesh.face_handles[face_index]; }
   std::size_t face_index(face_descriptor f) const { return get(m_mesh.face_index, f); }
   std::size_t number_of_faces() const { return m_mesh.number_of_faces(); }
+  /// whether the partition vertices `u` and `w` both lie on one breakline edge of the mesh
+  bool on_breakline(std::size_t u, std::size_t w) const
+  {
+    const Partition::Vertex& a = m_partition.vertices[u];
+    const Partition::Vertex& b = m_partition.vertices[w];
+    auto edges_of = [&](const Partition::Vertex& v, std::size_t e) {
+      if(v.kind == Partition::ON_EDGE) return v.element == e;
+      if(v.kind == Partition::AT_CORNER) return m_mesh.edge_vertices[e][0] == v.element || m_mesh.edge_vertices[e][1] == v.element;
+      return false;
+    };
+    if(a.kind == Partition::IN_FACE || b.kind == Partition::IN_FACE) return false;
+    const std::size_t e = (a.kind == Partition::ON_EDGE) ? a.element : (b.kind == Partition::ON_EDGE ? b.element : no_site);
+    if(e != no_site) return m_blocked_edge[e] != 0 && edges_of(a, e) && edges_of(b, e);
+    // two corners: the mesh edge joining them, if any
+    const auto it = m_corner_edge.find((std::min)(a.element, b.element) * m_mesh.number_of_vertices() + (std::max)(a.element, b.element));
+    return it != m_corner_edge.end() && m_blocked_edge[it->second] != 0;
+  }
+  /// the number of breakline edges of the mesh
+  std::size_t number_of_breakline_edges() const
+  {
+    std::size_t c = 0;
+    for(auto b : m_blocked_edge) c += b;
+    return c;
+  }
   /// the candidate sites kept for face `f` (ascending), after propagation and repair
   std::vector<std::size_t> candidates(face_descriptor f) const
   {
@@ -440,6 +467,7 @@ private:
   Vertex_point_map m_vpm;
   Surface_voronoi::internal::Indexed_mesh<TriangleMesh> m_mesh;
   std::vector<std::uint8_t> m_blocked_edge;
+  std::unordered_map<std::size_t, std::size_t> m_corner_edge;   // breakline edges by their sorted vertex pair
   std::vector<Surface_voronoi::internal::Site> m_sites;
   std::unique_ptr<Fields> m_fields;
   std::vector<std::vector<Surface_voronoi::internal::Face_field> > m_candidates;

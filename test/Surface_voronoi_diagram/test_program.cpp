@@ -1750,18 +1750,47 @@ TEST_CASE("program: sites file: two sites at the same surface point name both li
   CHECK(cites(r, dir, 6));
 }
 
-TEST_CASE("program: sites file: a non-zero weight is refused, a zero weight accepted", "[program]")
+TEST_CASE("program: sites file: a weight makes a power diagram, a zero weight changes nothing", "[program]")
 {
   Temp_dir dir;
-  const Run refused = run_on_cube_with_sites(dir, "0.2 0.7 1 0\n\n\n0.5 0.5 0 2.5\n");
-  check_one_line_error(refused, 1);
-  INFO("stderr: " << refused.err);
-  CHECK(cites(refused, dir, 4));
+  const Run plain = run_on_cube_with_sites(dir, "0.2 0.7 1\n0.5 0.5 0\n", { "--output", (dir / "plain.ply").string() });
+  check_success(plain);
+  const Run zero = run_on_cube_with_sites(dir, "0.2 0.7 1 0\n0.5 0.5 0 0.0\n", { "--output", (dir / "zero.ply").string() });
+  check_success(zero);
+  CHECK(same_files(dir / "plain.ply", dir / "zero.ply"));
 
-  const Run accepted = run_on_cube_with_sites(dir, "0.2 0.7 1 0\n0.5 0.5 0 0.0\n", { "--output",
-                                                                                   (dir / "out.ply").string() });
-  check_success(accepted);
-  CHECK(check_output(dir / "out.ply", cube(), 2).labels == std::set<int>({ 0, 1 }));
+  const Run heavy = run_on_cube_with_sites(dir, "0.2 0.7 1 0\n0.5 0.5 0 0.5\n", { "--output", (dir / "heavy.ply").string() });
+  check_success(heavy);
+  const Arrangement_summary a = check_output(dir / "plain.ply", cube(), 2);
+  const Arrangement_summary b = check_output(dir / "heavy.ply", cube(), 2);
+  CHECK(b.area_per_site.at(1) > a.area_per_site.at(1) + 0.1);
+
+  const Run bad = run_on_cube_with_sites(dir, "0.2 0.7 1 0\n\n\n0.5 0.5 0 nan\n");
+  check_one_line_error(bad, 1);
+  INFO("stderr: " << bad.err);
+  CHECK(cites(bad, dir, 4));
+}
+
+TEST_CASE("program: --breaklines reads mesh edges and refuses a pair that is not an edge", "[program]")
+{
+  Temp_dir dir;
+  write_mesh(dir / "box.off", cube());
+  write_bytes(dir / "sites.txt", "0.2 0.7 1\n0.5 0.5 0\n");
+  write_bytes(dir / "lines.txt", "# first edge of face 0, then a pair that is no edge\n0 1\n\n0 6\n");
+  const Run r = run_program(dir, { (dir / "box.off").string(), "--sites", (dir / "sites.txt").string(), "--metric",
+                                   "euclidean", "--breaklines", (dir / "lines.txt").string() });
+  check_one_line_error(r, 1);
+  INFO("stderr: " << r.err);
+  CHECK(cites(r, dir, 4));
+  write_bytes(dir / "ok.txt", "0 1\n");
+  const Run ok = run_program(dir, { (dir / "box.off").string(), "--sites", (dir / "sites.txt").string(), "--metric",
+                                    "euclidean", "--breaklines", (dir / "ok.txt").string(), "--output",
+                                    (dir / "out.ply").string() });
+  check_success(ok);
+  write_bytes(dir / "junk.txt", "0 x\n");
+  const Run junk = run_program(dir, { (dir / "box.off").string(), "--sites", (dir / "sites.txt").string(),
+                                      "--breaklines", (dir / "junk.txt").string() });
+  check_one_line_error(junk, 1);
 }
 
 TEST_CASE("program: sites file: a missing sites file is an error naming it", "[program]")

@@ -47,8 +47,9 @@ Value site_value(std::size_t site)
 ///   - `vertex_point_map`: the output's point map (default: internal `vertex_point`)
 ///   - `face_patch_map`: writable, output face -> site index (`-1` converted to the value
 ///      type where no site reaches)
-///   - `edge_is_constrained_map`: writable, output edge -> `true` on bisectors (edges whose
-///      two faces belong to different sites, or to a site and the unreached area)
+///   - `edge_is_constrained_map`: writable, output edge -> `true` on cell boundaries: bisectors
+///      (edges whose two faces belong to different sites, or to a site and the unreached
+///      area) and breakline edges
 ///   - `vertex_is_constrained_map`: writable, output vertex -> `true` at Voronoi vertices
 ///      (three or more cells meet, the surface border counting as one)
 ///   - `Surface_voronoi::parameters::input_face_map`: writable, output face -> the input
@@ -117,11 +118,27 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
     const std::size_t k = get(index_of, face(h, out));
     return k == 0 ? std::size_t(-3) : site_of_face[k - 1];
   };
+  // partition vertex of each output vertex (1 + id), to find the edges on breaklines
+  auto partition_id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), out);
+  const bool has_breaklines = diagram.number_of_breakline_edges() > 0;
+  if(has_breaklines)
+  {
+    for(vertex_descriptor v : vertices(out)) put(partition_id, v, 0);
+    for(std::size_t id = 0; id < vmap.size(); ++id)
+      if(vmap[id] != GT::null_vertex()) put(partition_id, vmap[id], id + 1);
+  }
+  auto on_breakline = [&](halfedge_descriptor h) {
+    if(!has_breaklines) return false;
+    const std::size_t a = get(partition_id, source(h, out)), b = get(partition_id, target(h, out));
+    return a > 0 && b > 0 && diagram.on_breakline(a - 1, b - 1);
+  };
   for(face_descriptor f : created)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out))
     {
       const halfedge_descriptor o = opposite(h, out);
-      if(!is_border(o, out) && label(h) != label(o))
+      // cell boundaries: bisectors, and breaklines (a cell reaching both sides of a
+      // breakline around its end still has the breakline as a boundary)
+      if(!is_border(o, out) && (label(h) != label(o) || on_breakline(h)))
         put(edge_bisector, edge(h, out), true);
       else
         put(edge_bisector, edge(h, out), false);

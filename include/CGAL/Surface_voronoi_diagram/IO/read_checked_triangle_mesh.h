@@ -73,6 +73,9 @@ struct Mesh_reading_report
   bool reoriented = false;
   /// input points used by no polygon, left out of the built mesh
   std::size_t isolated_points = 0;
+  /// for each input point (file order), the index of its vertex in the built mesh (in the
+  /// order of `vertices(mesh)`), or `std::size_t(-1)` for an isolated point
+  std::vector<std::size_t> mesh_vertex_of_point;
 };
 
 namespace internal {
@@ -642,6 +645,9 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
     }
   }
   report.isolated_points = kept_points.size() - kept;
+  report.mesh_vertex_of_point.assign(points.size(), std::size_t(-1));
+  for(std::size_t v = 0; v < points.size() && v < used.size(); ++v)
+    if(used[v]) report.mesh_vertex_of_point[v] = new_index[v];
   kept_points.resize(kept);
   for(std::array<std::size_t, 3>& tri : triangles)
     for(std::size_t& v : tri)
