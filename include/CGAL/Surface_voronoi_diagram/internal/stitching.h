@@ -562,12 +562,22 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
   }
 
   // 4. every vertex on a mesh edge goes into the piece edges that run along that edge
-  std::vector<std::vector<std::pair<double, std::size_t> > > on_edge(mesh.number_of_edges());
+  // (the points of each edge, sorted by parameter, in one flat array)
+  struct Edge_point { std::size_t edge; double t; std::size_t id; };
+  std::vector<Edge_point> edge_points;
   for(std::size_t id = 0; id < out.vertices.size(); ++id)
     if(rep[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
-      on_edge[out.vertices[id].element].emplace_back(out.vertices[id].t, id);
-  for(auto& list : on_edge)
-    if(list.size() > 1) std::sort(list.begin(), list.end());
+      edge_points.push_back(Edge_point{ out.vertices[id].element, out.vertices[id].t, id });
+  std::sort(edge_points.begin(), edge_points.end(), [](const Edge_point& a, const Edge_point& b) {
+    return a.edge < b.edge || (a.edge == b.edge && (a.t < b.t || (a.t == b.t && a.id < b.id)));
+  });
+  std::vector<std::uint32_t> points_on_edge(mesh.number_of_edges(), 0);
+  for(const Edge_point& x : edge_points) ++points_on_edge[x.edge];
+  auto range_of = [&](std::size_t e) {
+    auto lo = std::lower_bound(edge_points.begin(), edge_points.end(), e,
+                               [](const Edge_point& x, std::size_t edge) { return x.edge < edge; });
+    return std::make_pair(lo, lo + points_on_edge[e]);
+  };
   auto t_on = [&](std::size_t id, std::size_t e, bool& ok) -> double {
     const Partition::Vertex& v = out.vertices[id];
     ok = true;
@@ -581,12 +591,30 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
     ok = false;
     return 0.;
   };
+  // the vertices strictly inside the piece edge (u, w) lying along mesh edge e, in order
+  auto between = [&](std::size_t u, std::size_t w, std::size_t e, std::vector<std::size_t>& found) {
+    found.clear();
+    bool ok_u, ok_w;
+    const double tu = t_on(u, e, ok_u), tw = t_on(w, e, ok_w);
+    if(!ok_u || !ok_w) return false;
+    const double lo = (std::min)(tu, tw), hi = (std::max)(tu, tw);
+    const auto r = range_of(e);
+    for(auto it = r.first; it != r.second; ++it)
+      if(it->t > lo && it->t < hi && it->id != u && it->id != w) found.push_back(it->id);
+    if(tu > tw) std::reverse(found.begin(), found.end());
+    return true;
+  };
+  std::vector<std::size_t> found, refined;
   for(Partition::Piece& p : out.pieces)
   {
     const std::size_t f = p.face;
-    std::vector<std::size_t> refined;
+    // a piece whose face has no point on its edges has nothing to receive
+    bool candidate = false;
+    for(int le = 0; le < 3; ++le) candidate |= points_on_edge[mesh.edges[f][le]] > 0;
+    if(!candidate) continue;
     const std::size_t n = p.vertices.size();
     bool changed = false;
+    refined.clear();
     for(std::size_t k = 0; k < n; ++k)
     {
       const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % n];
@@ -594,25 +622,18 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh,
       for(int le = 0; le < 3; ++le)
       {
         const std::size_t e = mesh.edges[f][le];
-        if(on_edge[e].empty()) continue;
-        bool ok_u, ok_w;
-        const double tu = t_on(u, e, ok_u), tw = t_on(w, e, ok_w);
-        if(!ok_u || !ok_w) continue;
-        const double lo = (std::min)(tu, tw), hi = (std::max)(tu, tw);
-        std::vector<std::size_t> between;
-        for(const auto& x : on_edge[e])
-          if(x.first > lo && x.first < hi && x.second != u && x.second != w) between.push_back(x.second);
-        if(tu > tw) std::reverse(between.begin(), between.end());
-        if(!between.empty())
+        if(points_on_edge[e] == 0) continue;
+        if(!between(u, w, e, found)) continue;
+        if(!found.empty())
         {
-          refined.insert(refined.end(), between.begin(), between.end());
-          out.inserted_vertices += between.size();
+          refined.insert(refined.end(), found.begin(), found.end());
+          out.inserted_vertices += found.size();
           changed = true;
         }
         break;
       }
     }
-    if(changed) p.vertices.swap(refined);
+    if(changed) p.vertices = refined;
   }
 
   // 5. features smaller than double precision: vertices whose computed positions are
