@@ -6,10 +6,9 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
-#include <CGAL/Surface_mesh_shortest_path.h>
+#include <CGAL/Surface_voronoi_diagram/fidelity.h>
 
 #include <map>
-#include <queue>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -202,91 +201,6 @@ TEST_CASE("diagram: RVD labels equal the brute-force nearest site", "[diagram][r
   }
 }
 
-namespace {
-
-// Area through a wall (on area-uniform samples): a sample counts when its exact geodesic
-// distance to its assigned site is more than 3 times its geodesic distance to the exact
-// geodesic Voronoi site (CGAL's Surface_mesh_shortest_path with all sites as sources).
-// Exact single-source trees are costly, so a sample is first cleared by a cheap upper bound
-// (a path through mesh edges); `max_exact` bounds the exact trees built. Returns a lower
-// and an upper bound of the share (equal when every sample was decided).
-template <class Diagram>
-std::pair<double, double> through_wall_share(const Mesh& m, const Diagram& vd, std::size_t samples, std::size_t max_exact)
-{
-  typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> Traits;
-  typedef CGAL::Surface_mesh_shortest_path<Traits> Shortest_path;
-  const auto locs = area_uniform_locations(m, samples, 1234);
-  Shortest_path all(m);
-  for(std::size_t i = 0; i < vd.number_of_sites(); ++i) all.add_source_point(vd.site_location(i));
-  all.build_sequence_tree();
-  std::vector<double> g_star(samples);
-  std::vector<std::size_t> assigned(samples);
-  std::map<std::size_t, std::vector<std::size_t> > undecided;
-  for(std::size_t j = 0; j < samples; ++j)
-  {
-    const auto r = all.shortest_distance_to_source_points(locs[j].first, locs[j].second);
-    g_star[j] = r.first;
-    assigned[j] = vd.site_of(locs[j]);
-    std::size_t nearest = 0;
-    for(auto it = all.source_points_begin(); it != r.second; ++it) ++nearest;
-    if(assigned[j] != nearest) undecided[assigned[j]].push_back(j);
-  }
-  // upper bound: straight segments inside the site's and the sample's faces, mesh edges between
-  auto length = [](const Point& a, const Point& b) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))); };
-  std::map<std::size_t, std::vector<std::size_t> > exact_needed;
-  for(const auto& entry : undecided)
-  {
-    const std::size_t s = entry.first;
-    std::vector<double> dist(num_vertices(m), 1e300);
-    typedef std::pair<double, Mesh::Vertex_index> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-    const Point sp = vd.site_point(s);
-    for(auto v : vertices_around_face(halfedge(vd.site_location(s).first, m), m))
-    {
-      dist[std::size_t(v)] = length(sp, m.point(v));
-      queue.push(Item(dist[std::size_t(v)], v));
-    }
-    while(!queue.empty())
-    {
-      const Item it = queue.top();
-      queue.pop();
-      if(it.first > dist[std::size_t(it.second)]) continue;
-      for(auto h : halfedges_around_target(it.second, m))
-      {
-        const auto w = source(h, m);
-        const double d = it.first + length(m.point(w), m.point(it.second));
-        if(d < dist[std::size_t(w)]) { dist[std::size_t(w)] = d; queue.push(Item(d, w)); }
-      }
-    }
-    for(std::size_t j : entry.second)
-    {
-      const Point x = point_of(locs[j], m);
-      double upper = 1e300;
-      if(locs[j].first == vd.site_location(s).first) upper = length(x, sp);
-      for(auto v : vertices_around_face(halfedge(locs[j].first, m), m))
-        upper = (std::min)(upper, dist[std::size_t(v)] + length(x, m.point(v)));
-      if(upper > 3 * g_star[j]) exact_needed[s].push_back(j);
-    }
-  }
-  std::vector<std::pair<std::size_t, std::size_t> > order;   // (samples, site), most first
-  for(const auto& entry : exact_needed) order.emplace_back(entry.second.size(), entry.first);
-  std::sort(order.rbegin(), order.rend());
-  std::size_t through = 0, unresolved = 0;
-  for(std::size_t k = 0; k < order.size(); ++k)
-  {
-    const std::vector<std::size_t>& js = exact_needed[order[k].second];
-    if(k >= max_exact) { unresolved += js.size(); continue; }
-    Shortest_path one(m);
-    one.add_source_point(vd.site_location(order[k].second));
-    one.build_sequence_tree();
-    for(std::size_t j : js)
-      through += (one.shortest_distance_to_source_points(locs[j].first, locs[j].second).first > 3 * g_star[j]);
-  }
-  return std::make_pair(double(through) / double(samples), double(through + unresolved) / double(samples));
-}
-
-} // namespace
-
 TEST_CASE("diagram: biharmonic cells do not reach through thin walls, RVD cells do", "[diagram][thin]")
 {
   // Tolerance: at most 0.5% of the area of a biharmonic diagram may be assigned to a site
@@ -313,11 +227,11 @@ TEST_CASE("diagram: biharmonic cells do not reach through thin walls, RVD cells 
     SV::Diagram_options o;
     o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
     CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vr(m, e, sites, o);
-    const auto bh = through_wall_share(m, vb, 2000, 40);
-    const auto rvd = through_wall_share(m, vr, 2000, 6);
-    INFO(names[k] << ": area through a wall, biharmonic <= " << bh.second << ", RVD >= " << rvd.first);
-    CHECK(bh.second <= 0.005);
-    CHECK(rvd.first >= 0.03);   // a lower bound from 6 exact trees; the full share is larger
+    const SV::Fidelity_report bh = SV::measure_fidelity(vb, 2000, 1234, 40);
+    const SV::Fidelity_report rvd = SV::measure_fidelity(vr, 2000, 1234, 6);
+    INFO(names[k] << ": area through a wall, biharmonic <= " << bh.through_wall_upper << ", RVD >= " << rvd.through_wall_lower);
+    CHECK(bh.through_wall_upper <= 0.005);
+    CHECK(rvd.through_wall_lower >= 0.03);   // a lower bound from 6 exact trees; the full share is larger
   }
 }
 
