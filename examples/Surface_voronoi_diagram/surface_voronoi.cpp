@@ -5,7 +5,7 @@
 //
 //   surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
-//                   [--max-site-distance R] [--breaklines FILE] [--stats]
+//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site: a warning says so),
 // 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
@@ -20,7 +20,10 @@
 #include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
 #include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
+#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -56,7 +59,7 @@ struct Failure
 
 struct Arguments
 {
-  std::string mesh, sites, output, sites_out, breaklines, metric = "biharmonic";
+  std::string mesh, sites, output, sites_out, breaklines, dual, metric = "biharmonic";
   long long random = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
@@ -67,7 +70,7 @@ struct Arguments
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric biharmonic|euclidean|rvd]\n"
   "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -114,6 +117,7 @@ Arguments parse(int argc, char** argv)
     }
     else if(arg == "--stats") a.stats = true;
     else if(arg == "--breaklines") a.breaklines = value();
+    else if(arg == "--dual") a.dual = value();
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
     else if(a.mesh.empty()) a.mesh = arg;
     else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
@@ -227,6 +231,17 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     catch(const SV::Error& e) { fail(4, e.what()); }
   }
   (void)site_points;
+  if(!args.dual.empty())
+  {
+    std::vector<Point> points;
+    std::vector<std::array<std::size_t, 3> > triangles;
+    const bool manifold = SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
+    if(!CGAL::IO::write_polygon_soup(args.dual, points, triangles, CGAL::parameters::stream_precision(17)))
+      fail(4, "cannot write '" + args.dual + "'");
+    if(!manifold)
+      std::cerr << "surface_voronoi: warning: the dual triangulation is not a manifold (some cell is not a disk; "
+                   "more sites help)" << std::endl;
+  }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report(args, vd, load, embedding, output, insertion, num_faces(mesh));
 }

@@ -1,0 +1,71 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Remeshing by the dual (paper 4.7.3): the restricted Delaunay triangulation dual to the
+// diagram, one triangle per Voronoi vertex (a fan of triangles where more than three cells
+// meet), on the sites, oriented with the surface.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_DUAL_TRIANGULATION_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_DUAL_TRIANGULATION_H
+
+#include <CGAL/Surface_voronoi_diagram/arrangement.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramOutputs
+/// Writes the dual triangulation of `diagram` as a polygon soup: `points` receives the sites
+/// (in site order) and `triangles` one triangle per Voronoi vertex of the arrangement, its
+/// sites in counter-clockwise order seen from the surface's outside (the order of the cells
+/// around the vertex). Where k > 3 cells meet, a fan of k - 2 triangles. Voronoi vertices on
+/// the border of the surface give no triangle.
+/// \returns `true` if the soup is a valid polygon mesh (a 2-manifold, possibly with border),
+///          which is the case when every cell is a disk
+template <class Diagram, class PointOutputIterator, class TriangleOutputIterator>
+bool dual_triangulation(const Diagram& diagram, PointOutputIterator points, TriangleOutputIterator triangles)
+{
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+  Mesh arrangement;
+  auto site = arrangement.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -1).first;
+  make_arrangement(diagram, arrangement, CGAL::parameters::face_patch_map(site));
+
+  for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) *points++ = diagram.site_point(i);
+
+  std::vector<std::array<std::size_t, 3> > soup;
+  std::vector<std::int64_t> ring;
+  for(Mesh::Vertex_index v : arrangement.vertices())
+  {
+    if(CGAL::is_border(v, arrangement)) continue;
+    // the cells around v, in the order of the faces around it
+    ring.clear();
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, arrangement))
+    {
+      const std::int64_t s = site[face(h, arrangement)];
+      if(ring.empty() || ring.back() != s) ring.push_back(s);
+    }
+    while(ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+    if(ring.size() < 3) continue;
+    bool reached = true;
+    for(std::int64_t s : ring) reached &= (s >= 0);
+    if(!reached) continue;
+    // halfedges_around_target turns clockwise around v (seen from outside): reverse it
+    for(std::size_t k = 1; k + 1 < ring.size(); ++k)
+      soup.push_back({{ std::size_t(ring[0]), std::size_t(ring[k + 1]), std::size_t(ring[k]) }});
+  }
+  for(const auto& t : soup) *triangles++ = t;
+  return !soup.empty() && CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup);
+}
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif
