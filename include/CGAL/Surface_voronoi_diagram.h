@@ -204,6 +204,63 @@ public:
   const Surface_voronoi::Diagram_statistics& statistics() const { return m_stats; }
   /// @}
 
+  /// the area-weighted centroid of the cell of site `i` in space (not on the surface); the
+  /// site's own point for an empty cell
+  Point_3 cell_centroid(std::size_t i) const
+  {
+    double a = 0, c[3] = { 0, 0, 0 };
+    for(const auto& p : m_partition.pieces)
+    {
+      if(p.site != i) continue;
+      const auto& o = m_partition.vertices[p.vertices[0]].point;
+      for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+      {
+        const auto& q = m_partition.vertices[p.vertices[k]].point;
+        const auto& r = m_partition.vertices[p.vertices[k + 1]].point;
+        const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
+        const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+        const double t = 0.5 * std::sqrt(x * x + y * y + z * z);
+        a += t;
+        for(int j = 0; j < 3; ++j) c[j] += t * (o[j] + q[j] + r[j]) / 3.;
+      }
+    }
+    if(!(a > 0)) return site_point(i);
+    return Point_3(c[0] / a, c[1] / a, c[2] / a);
+  }
+
+  /// The energy of the diagram, sum over sites of the integral over their cell of the squared
+  /// distance to the site: exact for embeddings (|E(x) - E(s)|^2 is quadratic on a triangle,
+  /// integrated with the edge-midpoint rule), and the integral of the linearly interpolated
+  /// squared distance for lazy metrics. Weights are not subtracted.
+  double energy() const
+  {
+    double total = 0;
+    for(const auto& p : m_partition.pieces)
+    {
+      if(p.site == no_site) continue;
+      const std::size_t f = p.face;
+      auto value_at = [&](const std::array<double, 3>& x) { return squared_distance_in_face(p.site, f, x); };
+      const auto& o = m_partition.vertices[p.vertices[0]].point;
+      for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+      {
+        const auto& q = m_partition.vertices[p.vertices[k]].point;
+        const auto& r = m_partition.vertices[p.vertices[k + 1]].point;
+        const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
+        const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+        const double t = 0.5 * std::sqrt(x * x + y * y + z * z);
+        if(!(t > 0)) continue;
+        auto mid = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+          return std::array<double, 3>{{ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) }};
+        };
+        if(Fields::is_exact())
+          total += t / 3. * (value_at(mid(o, q)) + value_at(mid(q, r)) + value_at(mid(r, o)));
+        else
+          total += t / 3. * (value_at(o) + value_at(q) + value_at(r));
+      }
+    }
+    return total;
+  }
+
   /// \name Access for outputs
   /// @{
   const TriangleMesh& triangle_mesh() const { return *m_tm; }
@@ -286,6 +343,48 @@ private:
   }
 
   bool blocked(std::size_t f, int k) const { return m_blocked_edge[m_mesh.edges[f][k]] != 0; }
+
+  // barycentric coordinates of a point of face f (least-squares in the face's plane)
+  std::array<double, 3> barycentric_in_face(std::size_t f, const std::array<double, 3>& x) const
+  {
+    const auto& a = m_mesh.points[m_mesh.triangles[f][0]];
+    const auto& b = m_mesh.points[m_mesh.triangles[f][1]];
+    const auto& c = m_mesh.points[m_mesh.triangles[f][2]];
+    double e1[3], e2[3], d[3];
+    for(int j = 0; j < 3; ++j) { e1[j] = b[j] - a[j]; e2[j] = c[j] - a[j]; d[j] = x[j] - a[j]; }
+    const double g11 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2], g12 = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+    const double g22 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+    const double r1 = d[0] * e1[0] + d[1] * e1[1] + d[2] * e1[2], r2 = d[0] * e2[0] + d[1] * e2[1] + d[2] * e2[2];
+    const double det = g11 * g22 - g12 * g12;
+    const double u = (r1 * g22 - r2 * g12) / det, v = (r2 * g11 - r1 * g12) / det;
+    return {{ 1 - u - v, u, v }};
+  }
+
+  // squared distance (without weight) from site i to point x of face f: the embedding's for
+  // embeddings, the interpolated corner values for lazy metrics
+  double squared_distance_in_face(std::size_t i, std::size_t f, const std::array<double, 3>& x) const
+  {
+    const std::array<double, 3> b = barycentric_in_face(f, x);
+    if constexpr(Fields::is_exact())
+    {
+      const std::size_t d = m_fields->dimension();
+      const double* s = m_fields->site_coordinates(i);
+      double total = 0;
+      for(std::size_t c = 0; c < d; ++c)
+      {
+        double e = 0;
+        for(int k = 0; k < 3; ++k) e += b[k] * m_fields->vertex_coordinates(m_mesh.triangles[f][k])[c];
+        total += (e - s[c]) * (e - s[c]);
+      }
+      return total;
+    }
+    else
+    {
+      double total = 0;
+      for(int k = 0; k < 3; ++k) total += b[k] * (m_fields->value(i, m_mesh.triangles[f][k]) + m_sites[i].weight);
+      return total;
+    }
+  }
 
   void compute()
   {
