@@ -5,7 +5,8 @@
 //
 //   surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
-//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--stats]
+//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K]
+//                   [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site: a warning says so),
 // 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
@@ -21,6 +22,7 @@
 #include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
 #include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -64,13 +66,14 @@ struct Arguments
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
   std::size_t dimension = 10;
+  std::size_t lloyd = 0;
   double max_site_distance = 0.01;
 };
 
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric biharmonic|euclidean|rvd]\n"
   "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -118,6 +121,7 @@ Arguments parse(int argc, char** argv)
     else if(arg == "--stats") a.stats = true;
     else if(arg == "--breaklines") a.breaklines = value();
     else if(arg == "--dual") a.dual = value();
+    else if(arg == "--lloyd") a.lloyd = static_cast<std::size_t>(parse_integer(arg, value(), 0, 10000));
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
     else if(a.mesh.empty()) a.mesh = arg;
     else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
@@ -336,7 +340,39 @@ int run_main(int argc, char** argv)
   if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
   if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
     options.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w
+  // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
+  // with --insert-sites the relaxed sites are inserted afterwards
+  std::vector<double> lloyd_energies;
+  if(args.lloyd > 0)
+  {
     try
+    {
+      SV::Lloyd_result<Mesh> r;
+      if(args.metric == "biharmonic")
+      {
+        SV::Biharmonic_options bo;
+        bo.dimension = args.dimension;
+        CGAL::Biharmonic_embedding<Mesh> metric(mesh, bo);
+        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+      }
+      else
+      {
+        SV::Euclidean_embedding<Mesh> metric(mesh);
+        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+      }
+      lloyd_energies = r.energies;
+      for(std::size_t i = 0; i < r.sites.size(); ++i)
+      {
+        Point q = CGAL::Polygon_mesh_processing::construct_point(r.sites[i], mesh);
+        locations[i] = canonical_location(q, tree, mesh);
+        site_points[i] = q;
+      }
+    }
+    catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
+    catch(const SV::Numerical_error& e) { fail(3, e.what()); }
+  }
+
+  try
   {
     try
     {
@@ -402,6 +438,9 @@ int run_main(int argc, char** argv)
   catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
   catch(const SV::Numerical_error& e) { fail(3, e.what()); }
 
+  if(args.stats)
+    for(std::size_t k = 0; k < lloyd_energies.size(); ++k)
+      std::cout << "lloyd_energy_" << k << ": " << lloyd_energies[k] << "\n";
   if(!args.sites_out.empty())
   {
     std::ofstream os(args.sites_out);
