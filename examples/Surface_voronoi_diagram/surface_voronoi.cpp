@@ -3,7 +3,7 @@
 //
 // surface_voronoi: the command-line program. Its interface is a contract (see the manual):
 //
-//   surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric NAME]
+//   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
 //                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K]
 //                   [--stats]
@@ -23,6 +23,7 @@
 #include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -62,7 +63,7 @@ struct Failure
 struct Arguments
 {
   std::string mesh, sites, output, sites_out, breaklines, dual, metric = "biharmonic";
-  long long random = -1;
+  long long random = -1, blue_noise = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
   std::size_t dimension = 10;
@@ -71,7 +72,7 @@ struct Arguments
 };
 
 const char* usage =
-  "usage: surface_voronoi MESH (--sites FILE | --random N [--seed S]) [--metric biharmonic|euclidean|rvd]\n"
+  "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd]\n"
   "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
   "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--stats]";
 
@@ -107,6 +108,7 @@ Arguments parse(int argc, char** argv)
     if(arg == "--help" || arg == "-h") { std::cout << usage << std::endl; std::exit(0); }
     else if(arg == "--sites") a.sites = value();
     else if(arg == "--random") a.random = parse_integer(arg, value(), 1, 100000000);
+    else if(arg == "--blue-noise") a.blue_noise = parse_integer(arg, value(), 1, 10000000);
     else if(arg == "--seed") { a.seed = static_cast<unsigned int>(parse_integer(arg, value(), 0, 4294967295LL)); a.seed_given = true; }
     else if(arg == "--metric") a.metric = value();
     else if(arg == "--dimension") { a.dimension = static_cast<std::size_t>(parse_integer(arg, value(), 1, 10000)); a.dimension_given = true; }
@@ -127,40 +129,13 @@ Arguments parse(int argc, char** argv)
     else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
   }
   if(a.mesh.empty()) fail(2, "no mesh given");
-  if(a.sites.empty() == (a.random < 0)) fail(2, "give exactly one of --sites FILE and --random N");
-  if(a.seed_given && a.random < 0) fail(2, "--seed applies to --random only");
+  if(int(!a.sites.empty()) + int(a.random >= 0) + int(a.blue_noise >= 0) != 1)
+    fail(2, "give exactly one of --sites FILE, --random N and --blue-noise N");
+  if(a.seed_given && a.random < 0 && a.blue_noise < 0) fail(2, "--seed applies to --random and --blue-noise only");
   if(a.metric != "biharmonic" && a.metric != "euclidean" && a.metric != "rvd")
     fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean or rvd)");
   if(a.dimension_given && a.metric != "biharmonic") fail(2, "--dimension applies to the biharmonic metric only");
   return a;
-}
-
-// N area-uniform points: a face with probability proportional to its area, then a
-// uniform point in it.
-std::vector<Location> random_locations(const Mesh& mesh, std::size_t n, unsigned int seed)
-{
-  CGAL::Random rng(seed);
-  std::vector<Mesh::Face_index> fs(mesh.faces().begin(), mesh.faces().end());
-  std::vector<double> cumulative;
-  double total = 0;
-  for(Mesh::Face_index f : fs)
-  {
-    total += std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(source(halfedge(f, mesh), mesh)),
-                                                          mesh.point(target(halfedge(f, mesh), mesh)),
-                                                          mesh.point(target(next(halfedge(f, mesh), mesh), mesh)))));
-    cumulative.push_back(total);
-  }
-  std::vector<Location> out;
-  out.reserve(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const double x = rng.get_double(0, total);
-    std::size_t k = std::upper_bound(cumulative.begin(), cumulative.end(), x) - cumulative.begin();
-    k = (std::min)(k, fs.size() - 1);
-    double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
-    out.push_back(Location(fs[k], {{ 1 - r1, r1 * (1 - r2), r1 * r2 }}));
-  }
-  return out;
 }
 
 // Projection to the surface, made idempotent: locating a point and constructing it again
@@ -327,7 +302,10 @@ int run_main(int argc, char** argv)
   }
   else
   {
-    for(const Location& l : random_locations(mesh, static_cast<std::size_t>(args.random), args.seed))
+    const std::vector<Location> drawn = args.random >= 0
+      ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), args.seed)
+      : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), args.seed);
+    for(const Location& l : drawn)
     {
       Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
       locations.push_back(canonical_location(q, tree, mesh));
