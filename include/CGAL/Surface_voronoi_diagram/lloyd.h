@@ -16,6 +16,7 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -55,9 +56,28 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   tree.accelerate_distance_queries();
 
   Lloyd_result<TriangleMesh> result;
+  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > previous = sites;
   for(std::size_t it = 0;; ++it)
   {
-    Diagram diagram(tm, metric, sites, options);
+    // centroids of two cells may project to one surface point (at a sharp tip, say): the
+    // later site then stays where it was
+    std::unique_ptr<Diagram> made;
+    for(std::size_t attempt = 0; !made; ++attempt)
+    {
+      try { made.reset(new Diagram(tm, metric, sites, options)); }
+      catch(const Coincident_sites_error& e)
+      {
+        if(attempt > sites.size()) throw;
+        auto same = [](const auto& a, const auto& b) { return a.first == b.first && a.second == b.second; };
+        // revert the later site, or the earlier one if the later has not moved
+        const std::size_t k = same(sites[e.second], previous[e.second]) ? e.first : e.second;
+        if(same(sites[k], previous[k])) throw;
+        sites[k] = previous[k];
+        ++result.kept_in_place;
+      }
+    }
+    const Diagram& diagram = *made;
+    previous = sites;
     result.energies.push_back(diagram.energy());
     if(it == iterations) break;
     std::vector<Point_3> moved;
