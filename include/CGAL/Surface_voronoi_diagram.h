@@ -204,14 +204,15 @@ public:
   const Surface_voronoi::Diagram_statistics& statistics() const { return m_stats; }
   /// @}
 
-  /// the area-weighted centroid of the cell of site `i` in space (not on the surface); the
-  /// site's own point for an empty cell
-  Point_3 cell_centroid(std::size_t i) const
+  /// the area-weighted centroids of all cells in space (not on the surface), in site order;
+  /// the site's own point for an empty cell
+  std::vector<Point_3> cell_centroids() const
   {
-    double a = 0, c[3] = { 0, 0, 0 };
+    const std::size_t n = m_sites.size();
+    std::vector<double> a(n, 0.), c(3 * n, 0.);
     for(const auto& p : m_partition.pieces)
     {
-      if(p.site != i) continue;
+      if(p.site == no_site) continue;
       const auto& o = m_partition.vertices[p.vertices[0]].point;
       for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
       {
@@ -220,13 +221,19 @@ public:
         const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
         const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
         const double t = 0.5 * std::sqrt(x * x + y * y + z * z);
-        a += t;
-        for(int j = 0; j < 3; ++j) c[j] += t * (o[j] + q[j] + r[j]) / 3.;
+        a[p.site] += t;
+        for(int j = 0; j < 3; ++j) c[3 * p.site + j] += t * (o[j] + q[j] + r[j]) / 3.;
       }
     }
-    if(!(a > 0)) return site_point(i);
-    return Point_3(c[0] / a, c[1] / a, c[2] / a);
+    std::vector<Point_3> out;
+    out.reserve(n);
+    for(std::size_t i = 0; i < n; ++i)
+      out.push_back(a[i] > 0 ? Point_3(c[3 * i] / a[i], c[3 * i + 1] / a[i], c[3 * i + 2] / a[i]) : site_point(i));
+    return out;
   }
+
+  /// the area-weighted centroid of the cell of site `i` (see `cell_centroids()`)
+  Point_3 cell_centroid(std::size_t i) const { return cell_centroids()[i]; }
 
   /// The energy of the diagram, sum over sites of the integral over their cell of the squared
   /// distance to the site: exact for embeddings (|E(x) - E(s)|^2 is quadratic on a triangle,

@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <catch2/catch.hpp>
 
@@ -36,24 +37,7 @@ using Location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, doub
 template <class TriangleMesh>
 std::vector<Location<TriangleMesh> > area_uniform_locations(const TriangleMesh& tm, std::size_t n, unsigned seed)
 {
-  CGAL::Random rng(seed);
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
-  std::vector<double> cumulative;
-  double total = 0;
-  for(auto f : fs)
-  {
-    total += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm));
-    cumulative.push_back(total);
-  }
-  std::vector<Location<TriangleMesh> > out;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    std::size_t k = std::upper_bound(cumulative.begin(), cumulative.end(), rng.get_double(0, total)) - cumulative.begin();
-    k = (std::min)(k, fs.size() - 1);
-    const double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
-    out.push_back(Location<TriangleMesh>(fs[k], {{ 1 - r1, r1 * (1 - r2), r1 * r2 }}));
-  }
-  return out;
+  return CGAL::Surface_voronoi::random_sites(tm, n, seed);
 }
 
 template <class TriangleMesh>

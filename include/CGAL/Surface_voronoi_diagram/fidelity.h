@@ -10,6 +10,7 @@
 #define CGAL_SURFACE_VORONOI_DIAGRAM_FIDELITY_H
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -128,24 +129,7 @@ Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, un
   for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) sites.push_back(diagram.site_location(i));
   Geodesic_reference<Mesh> reference(tm, sites);
 
-  // area-uniform samples
-  CGAL::Random rng(seed);
-  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
-  std::vector<double> cumulative;
-  double total = 0;
-  for(auto f : fs)
-  {
-    total += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
-    cumulative.push_back(total);
-  }
-  std::vector<Face_location> locs;
-  for(std::size_t j = 0; j < samples; ++j)
-  {
-    std::size_t k = std::upper_bound(cumulative.begin(), cumulative.end(), rng.get_double(0, total)) - cumulative.begin();
-    k = (std::min)(k, fs.size() - 1);
-    const double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
-    locs.push_back(Face_location(fs[k], {{ 1 - r1, r1 * (1 - r2), r1 * r2 }}));
-  }
+  const std::vector<Face_location> locs = random_sites(tm, samples, seed);
 
   Fidelity_report report;
   report.samples = samples;

@@ -81,9 +81,10 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     result.energies.push_back(diagram.energy());
     if(it == iterations) break;
     std::vector<Point_3> moved;
+    const std::vector<Point_3> centroids = diagram.cell_centroids();
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
-      const auto l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(diagram.cell_centroid(i), tree, tm);
+      const auto l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(centroids[i], tree, tm);
       moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm));
       sites[i] = l;
     }
