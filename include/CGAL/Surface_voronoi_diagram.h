@@ -213,17 +213,11 @@ public:
     for(const auto& p : m_partition.pieces)
     {
       if(p.site == no_site) continue;
-      const auto& o = m_partition.vertices[p.vertices[0]].point;
-      for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
-      {
-        const auto& q = m_partition.vertices[p.vertices[k]].point;
-        const auto& r = m_partition.vertices[p.vertices[k + 1]].point;
-        const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
-        const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
-        const double t = 0.5 * std::sqrt(x * x + y * y + z * z);
+      for_each_fan_triangle(p, [&](const std::array<double, 3>& o, const std::array<double, 3>& q,
+                                   const std::array<double, 3>& r, double t) {
         a[p.site] += t;
         for(int j = 0; j < 3; ++j) c[3 * p.site + j] += t * (o[j] + q[j] + r[j]) / 3.;
-      }
+      });
     }
     std::vector<Point_3> out;
     out.reserve(n);
@@ -247,23 +241,17 @@ public:
       if(p.site == no_site) continue;
       const std::size_t f = p.face;
       auto value_at = [&](const std::array<double, 3>& x) { return squared_distance_in_face(p.site, f, x); };
-      const auto& o = m_partition.vertices[p.vertices[0]].point;
-      for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
-      {
-        const auto& q = m_partition.vertices[p.vertices[k]].point;
-        const auto& r = m_partition.vertices[p.vertices[k + 1]].point;
-        const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
-        const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
-        const double t = 0.5 * std::sqrt(x * x + y * y + z * z);
-        if(!(t > 0)) continue;
-        auto mid = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-          return std::array<double, 3>{{ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) }};
-        };
+      auto mid = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return std::array<double, 3>{{ 0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2]) }};
+      };
+      for_each_fan_triangle(p, [&](const std::array<double, 3>& o, const std::array<double, 3>& q,
+                                   const std::array<double, 3>& r, double t) {
+        if(!(t > 0)) return;
         if(Fields::is_exact())
           total += t / 3. * (value_at(mid(o, q)) + value_at(mid(q, r)) + value_at(mid(r, o)));
         else
           total += t / 3. * (value_at(o) + value_at(q) + value_at(r));
-      }
+      });
     }
     return total;
   }
@@ -350,6 +338,21 @@ private:
   }
 
   bool blocked(std::size_t f, int k) const { return m_blocked_edge[m_mesh.edges[f][k]] != 0; }
+
+  // calls f(o, q, r, area) for the triangles of a fan over a (convex, planar) piece
+  template <class F>
+  void for_each_fan_triangle(const typename Partition::Piece& p, F f) const
+  {
+    const auto& o = m_partition.vertices[p.vertices[0]].point;
+    for(std::size_t k = 1; k + 1 < p.vertices.size(); ++k)
+    {
+      const auto& q = m_partition.vertices[p.vertices[k]].point;
+      const auto& r = m_partition.vertices[p.vertices[k + 1]].point;
+      const double u[3] = { q[0] - o[0], q[1] - o[1], q[2] - o[2] }, w[3] = { r[0] - o[0], r[1] - o[1], r[2] - o[2] };
+      const double x = u[1] * w[2] - u[2] * w[1], y = u[2] * w[0] - u[0] * w[2], z = u[0] * w[1] - u[1] * w[0];
+      f(o, q, r, 0.5 * std::sqrt(x * x + y * y + z * z));
+    }
+  }
 
   // barycentric coordinates of a point of face f (least-squares in the face's plane)
   std::array<double, 3> barycentric_in_face(std::size_t f, const std::array<double, 3>& x) const
