@@ -14,8 +14,6 @@
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
 
 #include <algorithm>

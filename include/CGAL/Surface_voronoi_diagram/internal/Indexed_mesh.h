@@ -182,7 +182,6 @@ private:
     const std::size_t nf = triangles.size();
     face_component.assign(nf, none);
     number_of_components = 0;
-    std::vector<std::size_t> stack;
     // Components are connected through edges and through vertices (faces sharing only a
     // vertex are one surface for the Laplacian).
     std::vector<std::size_t> parent(points.size());

@@ -23,10 +23,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <functional>
 #include <map>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -71,29 +70,11 @@ struct Key
   bool operator==(const Key& o) const { return kind == o.kind && a == o.a && b == o.b && c == o.c && d == o.d; }
 };
 
-struct Key_hash
-{
-  std::size_t operator()(const Key& k) const
-  {
-    std::uint64_t h = k.a * 0x9E3779B97F4A7C15ull;
-    h ^= (std::uint64_t(k.b) << 1) * 0xC2B2AE3D27D4EB4Full;
-    h ^= (std::uint64_t(k.c) << 7) * 0x165667B19E3779F9ull;
-    h ^= (std::uint64_t(k.d) << 13) * 0x27D4EB2F165667C5ull;
-    h ^= k.kind;
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-
 struct Origin
 {
   Key key;
   std::size_t face;   // a face whose candidate list holds every site of the key
 };
-
-inline std::array<double, 3> vector_area_term(const std::array<double, 3>& p, const std::array<double, 3>& q)
-{
-  return { p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0] };
-}
 
 } // namespace stitching_detail
 
