@@ -13,6 +13,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/options.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/connectivity.h>
 #include <CGAL/Surface_voronoi_diagram/internal/cutting.h>
@@ -33,6 +34,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -77,8 +79,10 @@ public:
   /// \param sites a range of `vertex_descriptor`, `Face_location` or `Point_3` (a point is
   ///        moved to the nearest surface point)
   /// \param options weights, candidate selection, repair
-  /// \param np optional `vertex_point_map`, and `edge_is_constrained_map` (breaklines: a
-  ///        readable map edge -> bool; no cell crosses a constrained edge)
+  /// \param np optional `vertex_point_map`, `edge_is_constrained_map` (breaklines: a
+  ///        readable map edge -> bool; no cell crosses a constrained edge), and
+  ///        `Surface_voronoi::parameters::site_weight_map` (power weights: a readable map from
+  ///        the range's sites to `double`; if `options.weights` is given too, both must agree)
   /// \pre `tm` is a triangle mesh without degenerate faces; sites are distinct surface points
   /// \throws Surface_voronoi::Input_error for bad input, with a message naming the element
   template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -117,22 +121,31 @@ public:
 
     // sites
     Surface_voronoi::internal::Site_locator<TriangleMesh, Vertex_point_map> locator(tm, m_vpm, m_mesh, options.max_site_distance);
+    constexpr bool has_weight_map =
+        !is_default_parameter<NamedParameters, Surface_voronoi::internal_np::site_weight_map_t>::value;
+    std::vector<double> map_weights;
     for(const auto& s : sites)
+    {
       m_sites.push_back(locator.locate(s, m_sites.size()));
+      if constexpr(has_weight_map)
+        map_weights.push_back(static_cast<double>(get(get_parameter(np, Surface_voronoi::internal_np::site_weight_map), s)));
+    }
     if(m_sites.empty())
       throw Surface_voronoi::Input_error("there are no sites");
     if(m_sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
       throw Surface_voronoi::Input_error("too many sites");
-    if(!options.weights.empty())
+    if constexpr(has_weight_map)
+      merge_weight_map(map_weights);
+    if(!m_options.weights.empty())
     {
-      if(options.weights.size() != m_sites.size())
-        throw Surface_voronoi::Input_error("there are " + std::to_string(options.weights.size()) + " weights for "
+      if(m_options.weights.size() != m_sites.size())
+        throw Surface_voronoi::Input_error("there are " + std::to_string(m_options.weights.size()) + " weights for "
                                            + std::to_string(m_sites.size()) + " sites");
       for(std::size_t i = 0; i < m_sites.size(); ++i)
       {
-        if(!std::isfinite(options.weights[i]))
+        if(!std::isfinite(m_options.weights[i]))
           throw Surface_voronoi::Input_error("the weight of site " + std::to_string(i) + " is not finite");
-        m_sites[i].weight = options.weights[i];
+        m_sites[i].weight = m_options.weights[i];
       }
     }
     Surface_voronoi::internal::check_distinct_sites(m_mesh, m_sites);
@@ -299,6 +312,33 @@ public:
 
 private:
   typedef Surface_voronoi::internal::Site_fields<TriangleMesh, Metric> Fields;
+
+  // The map's weights become `m_options.weights`, which the rest of the construction reads.
+  // Both given is accepted only when they agree: silently preferring one would hide a mistake.
+  void merge_weight_map(const std::vector<double>& map_weights)
+  {
+    for(std::size_t i = 0; i < map_weights.size(); ++i)
+      if(!std::isfinite(map_weights[i]))
+        throw Surface_voronoi::Input_error("the weight of site " + std::to_string(i) + " (from site_weight_map) is not finite");
+    if(m_options.weights.empty())
+    {
+      m_options.weights = map_weights;
+      return;
+    }
+    if(m_options.weights.size() != map_weights.size())
+      throw Surface_voronoi::Input_error("Diagram_options::weights has " + std::to_string(m_options.weights.size())
+                                         + " weights but site_weight_map gives one for each of the "
+                                         + std::to_string(map_weights.size()) + " sites");
+    for(std::size_t i = 0; i < map_weights.size(); ++i)
+      if(m_options.weights[i] != map_weights[i])
+      {
+        std::ostringstream os;
+        os.precision(17);
+        os << "site " << i << " has two different weights, " << m_options.weights[i]
+           << " in Diagram_options::weights and " << map_weights[i] << " from site_weight_map";
+        throw Surface_voronoi::Input_error(os.str());
+      }
+  }
 
   void check_manifold_vertices() const
   {

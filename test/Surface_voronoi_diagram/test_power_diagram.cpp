@@ -3,6 +3,12 @@
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <limits>
+#include <map>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -71,4 +77,104 @@ TEST_CASE("power: a site with a very low weight may own nothing and is reported"
   CHECK(vd.unreached_area() == 0);
   for(std::size_t i = 0; i < sites.size(); ++i)
     if(i != 5) CHECK(vd.number_of_pieces(i) == 1);
+}
+
+namespace {
+
+template <class Diagram>
+void require_same_partition(const Diagram& a, const Diagram& b)
+{
+  REQUIRE(a.partition().pieces.size() == b.partition().pieces.size());
+  for(std::size_t p = 0; p < a.partition().pieces.size(); ++p)
+  {
+    CHECK(a.partition().pieces[p].site == b.partition().pieces[p].site);
+    CHECK(a.partition().pieces[p].vertices == b.partition().pieces[p].vertices);
+  }
+  for(std::size_t i = 0; i < a.number_of_sites(); ++i)
+  {
+    CHECK(a.site_weight(i) == b.site_weight(i));
+    CHECK(a.cell_area(i) == b.cell_area(i));
+  }
+}
+
+} // namespace
+
+TEST_CASE("power: a vertex weight map gives exactly the diagram of the equivalent vector", "[power]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 40, 16);
+  std::vector<Mesh::Vertex_index> sites;
+  for(std::size_t i = 3; i < num_vertices(m); i += 11) sites.push_back(Mesh::Vertex_index(Mesh::size_type(i)));
+  // every vertex has a weight, sites or not: only the sites' may be read
+  auto w = m.add_property_map<Mesh::Vertex_index, float>("v:weight", 0.f).first;
+  for(Mesh::Vertex_index v : vertices(m)) w[v] = float(std::size_t(v) % 7) * 0.01f;
+  SV::Diagram_options by_index;
+  for(Mesh::Vertex_index v : sites) by_index.weights.push_back(double(w[v]));
+  Euclidean e(m);
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Diagram;
+  Diagram from_vector(m, e, sites, by_index);
+  Diagram from_map(m, e, sites, SV::Diagram_options(), SV::parameters::site_weight_map(w));
+  require_same_partition(from_map, from_vector);
+  check_invariants(from_map, false);
+  // and the weights did change the diagram, so the comparison means something
+  Diagram plain(m, e, sites);
+  std::size_t changed = 0;
+  for(std::size_t i = 0; i < sites.size(); ++i) changed += (plain.cell_area(i) != from_map.cell_area(i));
+  CHECK(changed > sites.size() / 2);
+
+  // both given and equal is accepted; the map chains with CGAL's named parameters
+  auto none = m.add_property_map<Mesh::Edge_index, bool>("e:none", false).first;
+  Diagram both(m, e, sites, by_index, SV::parameters::site_weight_map(w).edge_is_constrained_map(none));
+  require_same_partition(both, from_vector);
+}
+
+TEST_CASE("power: a weight map on point sites, with the RVD baseline", "[power]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 3, 1.0);
+  std::vector<Point> sites;
+  std::map<Point, double> weight_of;
+  for(const auto& l : area_uniform_locations(m, 40, 9))
+  {
+    sites.push_back(point_of(l, m));
+    weight_of[sites.back()] = (sites.size() % 5 == 0) ? 0.3 : 0.;
+  }
+  SV::Diagram_options by_index, rvd;
+  for(const Point& p : sites) by_index.weights.push_back(weight_of[p]);
+  rvd.candidates = by_index.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+  Euclidean e(m);
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Diagram;
+  Diagram from_vector(m, e, sites, by_index);
+  Diagram from_map(m, e, sites, rvd, SV::parameters::site_weight_map(boost::make_assoc_property_map(weight_of)));
+  require_same_partition(from_map, from_vector);
+  CHECK(from_map.site_weight(4) == 0.3);
+}
+
+TEST_CASE("power: bad weights from a map are Input_errors", "[power]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 2, 1.0);
+  const std::vector<Mesh::Vertex_index> sites = { Mesh::Vertex_index(0), Mesh::Vertex_index(10), Mesh::Vertex_index(20) };
+  auto w = m.add_property_map<Mesh::Vertex_index, double>("v:weight", 0.).first;
+  Euclidean e(m);
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Diagram;
+  for(double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                     -std::numeric_limits<double>::infinity() })
+  {
+    w[Mesh::Vertex_index(10)] = bad;
+    CHECK_THROWS_WITH(Diagram(m, e, sites, SV::Diagram_options(), SV::parameters::site_weight_map(w)),
+                      "the weight of site 1 (from site_weight_map) is not finite");
+  }
+  w[Mesh::Vertex_index(10)] = 0.5;
+  SV::Diagram_options two;
+  two.weights = { 0., 0.5 };
+  CHECK_THROWS_AS(Diagram(m, e, sites, two, SV::parameters::site_weight_map(w)), SV::Input_error);
+  CHECK_THROWS_WITH(Diagram(m, e, sites, two, SV::parameters::site_weight_map(w)),
+                    Catch::Contains("has 2 weights") && Catch::Contains("3 sites"));
+  SV::Diagram_options different;
+  different.weights = { 0., 0.25, 0. };
+  CHECK_THROWS_WITH(Diagram(m, e, sites, different, SV::parameters::site_weight_map(w)),
+                    Catch::Contains("site 1 has two different weights"));
+  different.weights[1] = 0.5;
+  CHECK_NOTHROW(Diagram(m, e, sites, different, SV::parameters::site_weight_map(w)));
 }

@@ -31,7 +31,8 @@ enum class Candidate_selection
 /// Options of `CGAL::Surface_voronoi_diagram`.
 struct Diagram_options
 {
-  /// power weights, one per site, in squared units of the metric (empty: all zero)
+  /// power weights, one per site in site order, in squared units of the metric (empty: all
+  /// zero); see also the named parameter `Surface_voronoi::parameters::site_weight_map`
   std::vector<double> weights;
   /// candidate selection (propagation, or the RVD baseline)
   Candidate_selection candidates = Candidate_selection::PROPAGATION;

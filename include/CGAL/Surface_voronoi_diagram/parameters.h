@@ -14,6 +14,7 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal_np {
 enum input_face_map_t { input_face_map };
+enum site_weight_map_t { site_weight_map };
 } // namespace internal_np
 
 namespace parameters {
@@ -33,6 +34,25 @@ CGAL::Named_function_parameters<Map, internal_np::input_face_map_t, CGAL::Named_
 input_face_map(const Map& m, const CGAL::Named_function_parameters<T, Tag, Base>& np)
 {
   return CGAL::Named_function_parameters<Map, internal_np::input_face_map_t, CGAL::Named_function_parameters<T, Tag, Base> >(m, np);
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// A readable property map from the sites, as the diagram's site range holds them
+/// (`vertex_descriptor`, `Face_location` or `Point_3`), to their power weights (a type
+/// convertible to `double`, in squared units of the metric). For vertex sites, a vertex
+/// property map of the mesh. Weights by site index go in `Diagram_options::weights`.
+template <class Map>
+CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t> site_weight_map(const Map& m)
+{
+  return CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t>(m);
+}
+
+/// the same, appended to an existing chain of named parameters
+template <class Map, class T, class Tag, class Base>
+CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t, CGAL::Named_function_parameters<T, Tag, Base> >
+site_weight_map(const Map& m, const CGAL::Named_function_parameters<T, Tag, Base>& np)
+{
+  return CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t, CGAL::Named_function_parameters<T, Tag, Base> >(m, np);
 }
 
 } // namespace parameters
