@@ -1,0 +1,84 @@
+// Power diagrams (paper 4.7.1): site i owns the points where |E(x) - E(s_i)|^2 - w_i is
+// smallest. The weights are given twice, as a vertex property map and as a vector in site
+// order, to show that both forms give the same diagram.
+//   power_diagram [MESH] [OUT.ply]
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <vector>
+
+typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Mesh;
+typedef CGAL::Biharmonic_embedding<Mesh> Metric;
+namespace SV = CGAL::Surface_voronoi;
+
+int main(int argc, char** argv)
+{
+  if(argc > 3)
+  {
+    std::cerr << "usage: power_diagram [MESH] [OUT.ply]" << std::endl;
+    return EXIT_FAILURE;
+  }
+  const std::string file = argc > 1 ? argv[1] : "data/lampshade_thin.off";
+  const std::string out = argc > 2 ? argv[2] : "power_diagram.ply";
+  try
+  {
+    Mesh mesh;
+    SV::IO::read_checked_triangle_mesh(file, mesh);
+    if(num_vertices(mesh) < 400) throw SV::Input_error("the mesh needs at least 400 vertices for 40 sites");
+    Metric metric(mesh);
+    std::vector<Mesh::Vertex_index> sites;
+    for(std::size_t i = 0; i < 40; ++i)
+      sites.push_back(Mesh::Vertex_index(Mesh::size_type(i * (num_vertices(mesh) / 40))));
+    CGAL::Surface_voronoi_diagram<Mesh> plain(mesh, metric, sites);
+
+    // Weights are in squared units of the metric. Half the squared distance to the nearest
+    // neighbouring site moves the bisector from half to three quarters of the way to it.
+    auto weight = mesh.add_property_map<Mesh::Vertex_index, double>("v:weight", 0.).first;
+    std::vector<double> e(metric.dimension()), f(metric.dimension());
+    for(std::size_t i = 0; i < sites.size(); i += 8)
+    {
+      double nearest = -1;
+      metric.coordinates(sites[i], e.data());
+      for(std::size_t j : plain.neighbors(i))
+      {
+        metric.coordinates(sites[j], f.data());
+        double d2 = 0;
+        for(std::size_t c = 0; c < e.size(); ++c) d2 += (e[c] - f[c]) * (e[c] - f[c]);
+        if(nearest < 0 || d2 < nearest) nearest = d2;
+      }
+      weight[sites[i]] = 0.5 * (nearest < 0 ? 0. : nearest);
+    }
+
+    // the property-map form (weights keyed like the sites) and the vector form (site order)
+    CGAL::Surface_voronoi_diagram<Mesh> by_map(mesh, metric, sites, SV::Diagram_options(),
+                                               SV::parameters::site_weight_map(weight));
+    SV::Diagram_options options;
+    for(Mesh::Vertex_index v : sites) options.weights.push_back(weight[v]);
+    CGAL::Surface_voronoi_diagram<Mesh> by_vector(mesh, metric, sites, options);
+
+    // a weighted cell may still shrink where a neighbour got a larger weight
+    bool same = true;
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      same = same && by_map.cell_area(i) == by_vector.cell_area(i);
+      if(weight[sites[i]] > 0)
+        std::cout << "site " << i << ": weight " << weight[sites[i]] << ", area " << plain.cell_area(i) << " -> "
+                  << by_map.cell_area(i) << std::endl;
+    }
+    std::cout << "map and vector give the same cells: " << (same ? "yes" : "NO") << std::endl;
+    SV::IO::write_arrangement_PLY(out, by_map);
+    std::cout << "written to " << out << std::endl;
+    return same ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "power_diagram: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+}
