@@ -126,6 +126,9 @@ TEST_CASE("power: a vertex weight map gives exactly the diagram of the equivalen
   auto none = m.add_property_map<Mesh::Edge_index, bool>("e:none", false).first;
   Diagram both(m, e, sites, by_index, SV::parameters::site_weight_map(w).edge_is_constrained_map(none));
   require_same_partition(both, from_vector);
+  Diagram appended(m, e, sites, SV::Diagram_options(),
+                   SV::parameters::site_weight_map(w, CGAL::parameters::edge_is_constrained_map(none)));
+  require_same_partition(appended, from_vector);
 }
 
 TEST_CASE("power: a weight map on point sites, with the RVD baseline", "[power]")
