@@ -18,6 +18,8 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
 #include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
@@ -65,15 +67,15 @@ struct Arguments
   std::string mesh, sites, output, sites_out, breaklines, dual, metric = "biharmonic";
   long long random = -1, blue_noise = -1;
   unsigned int seed = 0;
-  bool seed_given = false, dimension_given = false, insert_sites = false, stats = false;
+  bool seed_given = false, dimension_given = false, insert_sites = false, stats = false, no_refine = false;
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
   double max_site_distance = 0.01;
 };
 
 const char* usage =
-  "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd]\n"
-  "                       [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]\n"
+  "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
+  "                       [--dimension D] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
   "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
@@ -111,6 +113,7 @@ Arguments parse(int argc, char** argv)
     else if(arg == "--blue-noise") a.blue_noise = parse_integer(arg, value(), 1, 10000000);
     else if(arg == "--seed") { a.seed = static_cast<unsigned int>(parse_integer(arg, value(), 0, 4294967295LL)); a.seed_given = true; }
     else if(arg == "--metric") a.metric = value();
+    else if(arg == "--no-refine") a.no_refine = true;
     else if(arg == "--dimension") { a.dimension = static_cast<std::size_t>(parse_integer(arg, value(), 1, 10000)); a.dimension_given = true; }
     else if(arg == "--insert-sites") a.insert_sites = true;
     else if(arg == "--output") a.output = value();
@@ -132,8 +135,8 @@ Arguments parse(int argc, char** argv)
   if(int(!a.sites.empty()) + int(a.random >= 0) + int(a.blue_noise >= 0) != 1)
     fail(2, "give exactly one of --sites FILE, --random N and --blue-noise N");
   if(a.seed_given && a.random < 0 && a.blue_noise < 0) fail(2, "--seed applies to --random and --blue-noise only");
-  if(a.metric != "biharmonic" && a.metric != "euclidean" && a.metric != "rvd")
-    fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean or rvd)");
+  if(a.metric != "biharmonic" && a.metric != "euclidean" && a.metric != "rvd" && a.metric != "geodesic")
+    fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean, rvd or geodesic)");
   if(a.dimension_given && a.metric != "biharmonic") fail(2, "--dimension applies to the biharmonic metric only");
   return a;
 }
@@ -333,6 +336,11 @@ int run_main(int argc, char** argv)
         CGAL::Biharmonic_embedding<Mesh> metric(mesh, bo);
         r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
       }
+      else if(args.metric == "geodesic")
+      {
+        SV::Geodesic_metric<Mesh> metric(mesh);
+        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+      }
       else
       {
         SV::Euclidean_embedding<Mesh> metric(mesh);
@@ -357,7 +365,37 @@ int run_main(int argc, char** argv)
       const Mesh* work = &mesh;
       std::vector<Location> work_sites = locations;
       SV::Site_insertion_result<Mesh, Point> inserted;
+      SV::Refinement_result<Mesh, Point> refined;
       double insertion = 0;
+      // marks the edges of a working copy that lie on an input breakline
+      auto carry_breaklines = [&](Mesh& copy, const auto& input_face) {
+        auto marked = copy.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+        if(args.breaklines.empty()) return;
+        for(auto e : edges(copy))
+        {
+          const auto h = halfedge(e, copy), o = opposite(h, copy);
+          if(is_border(h, copy) || is_border(o, copy)) continue;
+          const auto f1 = input_face[face(h, copy)], f2 = input_face[face(o, copy)];
+          if(f1 == f2) continue;
+          for(auto g : CGAL::halfedges_around_face(halfedge(f1, mesh), mesh))
+            if(face(opposite(g, mesh), mesh) == f2 && breakline[edge(g, mesh)]) marked[e] = true;
+        }
+      };
+      if(args.metric == "geodesic" && !args.insert_sites && !args.no_refine)
+      {
+        // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
+        const auto ti = Clock::now();
+        refined = SV::refine_for_sites(mesh, locations);
+        if(refined.edges_split > 0)
+        {
+          work = &refined.mesh;
+          work_sites = refined.sites;
+          carry_breaklines(refined.mesh, refined.input_face);
+          std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << refined.edges_split
+                    << " edges split, " << num_vertices(refined.mesh) << " vertices; --no-refine to keep it)" << std::endl;
+        }
+        insertion = std::chrono::duration<double>(Clock::now() - ti).count();
+      }
       if(args.insert_sites)
       {
         const auto ti = Clock::now();
@@ -377,17 +415,7 @@ int run_main(int argc, char** argv)
           work_sites.push_back(Location(f, b));
         }
         // an edge of the augmented mesh between two input faces lies on their common edge
-        auto augmented_breakline = inserted.mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
-        if(!args.breaklines.empty())
-          for(auto e : edges(inserted.mesh))
-          {
-            const auto h = halfedge(e, inserted.mesh), o = opposite(h, inserted.mesh);
-            if(is_border(h, inserted.mesh) || is_border(o, inserted.mesh)) continue;
-            const auto f1 = inserted.input_face[face(h, inserted.mesh)], f2 = inserted.input_face[face(o, inserted.mesh)];
-            if(f1 == f2) continue;
-            for(auto g : CGAL::halfedges_around_face(halfedge(f1, mesh), mesh))
-              if(face(opposite(g, mesh), mesh) == f2 && breakline[edge(g, mesh)]) augmented_breakline[e] = true;
-          }
+        carry_breaklines(inserted.mesh, inserted.input_face);
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
       const auto te = Clock::now();
@@ -398,6 +426,11 @@ int run_main(int argc, char** argv)
         CGAL::Biharmonic_embedding<Mesh> metric(*work, bo);
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
         run(args, *work, metric, work_sites, options, load, embedding, insertion, site_points);
+      }
+      else if(args.metric == "geodesic")
+      {
+        SV::Geodesic_metric<Mesh> metric(*work);
+        run(args, *work, metric, work_sites, options, load, 0., insertion, site_points);
       }
       else
       {

@@ -28,7 +28,8 @@ TEST_CASE("fidelity: on a plane the geodesic reference is the nearest site", "[f
     const auto r = reference.nearest(l);
     CHECK(r.first == Approx(d[0].first).epsilon(1e-9));
     wrong += (r.second != d[0].second);
-    CHECK(reference.distance(d[1].second, l) == Approx(d[1].first).epsilon(1e-9));
+    if(checked < 20)   // one exact single-source tree per call: a few suffice
+      CHECK(reference.distance(d[1].second, l) == Approx(d[1].first).epsilon(1e-9));
     ++checked;
   }
   CHECK(wrong == 0);

@@ -9,6 +9,7 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_FIDELITY_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_FIDELITY_H
 
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
@@ -30,7 +31,7 @@ namespace Surface_voronoi {
 /// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// Exact geodesic Voronoi labels: the site at the smallest polyhedral geodesic distance,
 /// computed by `CGAL::Surface_mesh_shortest_path` with every site as a source. Distances to
-/// one given site are computed on demand (one single-source tree per site, cached).
+/// one given site are computed on demand by a single-source tree.
 /// \tparam TriangleMesh a triangle mesh with internal vertex, halfedge and face indices
 ///         (`Surface_mesh`, or `Polyhedron_3` with ids)
 template <class TriangleMesh>
@@ -44,7 +45,7 @@ public:
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
   Geodesic_reference(const TriangleMesh& tm, const std::vector<Face_location>& sites)
-    : m_tm(tm), m_sites(sites), m_all(tm), m_trees(sites.size())
+    : m_tm(tm), m_sites(sites), m_all(tm)
   {
     if(sites.empty()) throw Input_error("the geodesic reference needs at least one site");
     for(const Face_location& s : sites) m_all.add_source_point(to_sp(s));
@@ -60,24 +61,23 @@ public:
     return std::make_pair(r.first, index);
   }
 
-  /// the geodesic distance from site `i` to `l`
-  double distance(std::size_t i, const Face_location& l) const
+  /// the geodesic distances from site `i` to each of `ls`, by one exact single-source tree
+  /// (built here and freed on return: a tree over the whole mesh is costly in time and memory)
+  std::vector<double> distances(std::size_t i, const std::vector<Face_location>& ls) const
   {
-    if(!m_trees[i])
-    {
-      m_trees[i].reset(new Shortest_path(m_tm));
-      m_trees[i]->add_source_point(to_sp(m_sites[i]));
-      m_trees[i]->build_sequence_tree();
-    }
-    return m_trees[i]->shortest_distance_to_source_points(l.first, to_sp(l).second).first;
+    Shortest_path tree(m_tm);
+    tree.add_source_point(to_sp(m_sites[i]));
+    tree.build_sequence_tree();
+    std::vector<double> out;
+    out.reserve(ls.size());
+    for(const Face_location& l : ls) out.push_back(tree.shortest_distance_to_source_points(l.first, to_sp(l).second).first);
+    return out;
   }
 
-  std::size_t number_of_trees() const
-  {
-    std::size_t c = 0;
-    for(const auto& t : m_trees) c += (t != nullptr);
-    return c;
-  }
+  /// the geodesic distance from site `i` to `l` (one exact single-source tree)
+  double distance(std::size_t i, const Face_location& l) const { return distances(i, { l }).front(); }
+
+  std::size_t number_of_sites() const { return m_sites.size(); }
 
 private:
   static typename Shortest_path::Face_location to_sp(const Face_location& l)
@@ -89,7 +89,6 @@ private:
   const TriangleMesh& m_tm;
   std::vector<Face_location> m_sites;
   mutable Shortest_path m_all;
-  mutable std::vector<std::unique_ptr<Shortest_path> > m_trees;
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramFidelity
@@ -102,8 +101,9 @@ struct Fidelity_report
   /// share of the area no site reaches
   double unreached_share = 0;
   /// share of the area assigned to a site more than 3x farther (geodesically) than the
-  /// geodesic Voronoi site, bracketed: lower counts what was proven, upper adds what was left
-  /// undecided when `max_exact_trees` ran out
+  /// geodesic Voronoi site, bracketed: lower counts what was decided, upper adds what was left
+  /// undecided when `max_exact_trees` ran out. A sample is decided by a fast-marching
+  /// distance when that is more than 10% away from the threshold, by an exact tree otherwise.
   double through_wall_lower = 0, through_wall_upper = 0;
   std::size_t empty_cells = 0;
   std::size_t broken_cells_before_repair = 0;
@@ -113,11 +113,17 @@ struct Fidelity_report
 /// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// Measures `diagram` on `samples` area-uniform points (seeded), against a geodesic
 /// reference built on the diagram's sites. A sample whose assigned site is not the geodesic
-/// one is cleared from "through a wall" by a cheap upper bound (a path along mesh edges)
-/// when possible; otherwise by an exact single-source tree, at most `max_exact_trees` of them.
+/// one is classified "through a wall" or not by its fast-marching distance to the assigned
+/// site (`Geodesic_metric`) when that is more than 10% away from the threshold, otherwise by
+/// an exact single-source tree, at most `max_exact_trees` of them (each costs seconds on a
+/// mesh of 10k vertices).
+///
+/// This overload reuses `reference`, which must have been built on the same mesh and the
+/// same sites as `diagram` (to compare several metrics on one set of sites at the cost of
+/// one reference).
 template <class Diagram>
-Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, unsigned int seed = 0,
-                                 std::size_t max_exact_trees = 64)
+Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<typename Diagram::Triangle_mesh>& reference,
+                                 std::size_t samples, unsigned int seed = 0, std::size_t max_exact_trees = 8)
 {
   typedef typename Diagram::Triangle_mesh Mesh;
   typedef typename Diagram::Face_location Face_location;
@@ -125,7 +131,8 @@ Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, un
   auto vpm = diagram.vertex_point_map();
   std::vector<Face_location> sites;
   for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) sites.push_back(diagram.site_location(i));
-  Geodesic_reference<Mesh> reference(tm, sites);
+  if(sites.size() != reference.number_of_sites())
+    throw Input_error("measure_fidelity: the reference was built on other sites");
 
   const std::vector<Face_location> locs = random_sites(tm, samples, seed);
 
@@ -152,58 +159,39 @@ Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, un
       undecided[assigned].push_back(j);
     }
   }
-  // upper bound of the geodesic distance: straight segments inside the site's and the
-  // sample's faces, mesh edges in between (Dijkstra)
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  auto vindex = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  std::size_t nv = 0;
-  for(vertex_descriptor v : vertices(tm)) put(vindex, v, nv++);
+  // Distance to the assigned site: a fast-marching estimate first (one front per site, over
+  // as much of the mesh as needed); samples whose estimate is within 10% of the threshold
+  // are decided by an exact single-source tree, at most `max_exact_trees` of them.
+  const double band = 1.1;
+  Geodesic_metric<Mesh, decltype(vpm)> marching(tm, CGAL::parameters::vertex_point_map(vpm));
+  std::size_t through = 0, left = 0;
   std::map<std::size_t, std::vector<std::size_t> > exact_needed;
   for(const auto& entry : undecided)
   {
     const std::size_t s = entry.first;
-    std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
-    typedef std::pair<double, vertex_descriptor> Item;
-    auto later = [&](const Item& a, const Item& b) { return a.first > b.first; };
-    std::priority_queue<Item, std::vector<Item>, decltype(later)> queue(later);
+    marching.set_sites(tm, std::vector<Face_location>(1, sites[s]));
     const auto sp = point(sites[s]);
-    for(vertex_descriptor v : vertices_around_face(halfedge(sites[s].first, tm), tm))
-    {
-      dist[get(vindex, v)] = length(sp, get(vpm, v));
-      queue.push(Item(dist[get(vindex, v)], v));
-    }
-    while(!queue.empty())
-    {
-      const Item it = queue.top();
-      queue.pop();
-      if(it.first > dist[get(vindex, it.second)]) continue;
-      for(auto h : halfedges_around_target(it.second, tm))
-      {
-        const vertex_descriptor w = source(h, tm);
-        const double d = it.first + length(get(vpm, w), get(vpm, it.second));
-        if(d < dist[get(vindex, w)]) { dist[get(vindex, w)] = d; queue.push(Item(d, w)); }
-      }
-    }
     for(std::size_t j : entry.second)
     {
       const auto x = point(locs[j]);
-      double upper = std::numeric_limits<double>::infinity();
-      if(locs[j].first == sites[s].first) upper = length(x, sp);
-      for(vertex_descriptor v : vertices_around_face(halfedge(locs[j].first, tm), tm))
-        upper = (std::min)(upper, dist[get(vindex, v)] + length(x, get(vpm, v)));
-      if(upper > 3 * g_star[j]) exact_needed[s].push_back(j);
+      double estimate = (locs[j].first == sites[s].first) ? length(x, sp) : std::numeric_limits<double>::infinity();
+      for(auto v : vertices_around_face(halfedge(locs[j].first, tm), tm))
+        estimate = (std::min)(estimate, std::sqrt(marching.squared_distance(0, v)) + length(x, get(vpm, v)));
+      if(estimate > band * 3 * g_star[j]) ++through;
+      else if(estimate * band >= 3 * g_star[j]) exact_needed[s].push_back(j);
     }
   }
   std::vector<std::pair<std::size_t, std::size_t> > order;
   for(const auto& entry : exact_needed) order.emplace_back(entry.second.size(), entry.first);
   std::sort(order.rbegin(), order.rend());
-  std::size_t through = 0, left = 0;
   for(std::size_t k = 0; k < order.size(); ++k)
   {
     const std::vector<std::size_t>& js = exact_needed[order[k].second];
     if(k >= max_exact_trees) { left += js.size(); continue; }
-    for(std::size_t j : js)
-      through += (reference.distance(order[k].second, locs[j]) > 3 * g_star[j]);
+    std::vector<Face_location> targets;
+    for(std::size_t j : js) targets.push_back(locs[j]);
+    const std::vector<double> d = reference.distances(order[k].second, targets);
+    for(std::size_t t = 0; t < js.size(); ++t) through += (d[t] > 3 * g_star[js[t]]);
   }
   const double n = double(samples);
   report.mislabeled_share = double(mislabeled) / n;
@@ -211,6 +199,18 @@ Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, un
   report.through_wall_lower = double(through) / n;
   report.through_wall_upper = double(through + left) / n;
   return report;
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramFidelity
+/// Measures `diagram` against a geodesic reference built here on the diagram's sites.
+template <class Diagram>
+Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, unsigned int seed = 0,
+                                 std::size_t max_exact_trees = 8)
+{
+  std::vector<typename Diagram::Face_location> sites;
+  for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) sites.push_back(diagram.site_location(i));
+  Geodesic_reference<typename Diagram::Triangle_mesh> reference(diagram.triangle_mesh(), sites);
+  return measure_fidelity(diagram, reference, samples, seed, max_exact_trees);
 }
 
 } // namespace Surface_voronoi

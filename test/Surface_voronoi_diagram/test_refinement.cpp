@@ -1,0 +1,81 @@
+// Tests of CGAL/Surface_voronoi_diagram/refinement.h: the refined copy is the same surface,
+// its edges are short enough, the sites stay where they were, and on a coarse mesh the
+// geodesic metric needs it to come close to the exact geodesic Voronoi diagram.
+#include "test_support.h"
+
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/fidelity.h>
+#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_voronoi_diagram/refinement.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <map>
+
+using namespace svd_test;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = CGAL::Surface_voronoi::generators;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+TEST_CASE("refinement: the same surface, short edges, the sites in place", "[refinement]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 10, 5);   // coarse: 50 vertices, long thin faces
+  const auto sites = area_uniform_locations(m, 200, 5);
+  const auto r = SV::refine_for_sites(m, sites);
+  REQUIRE(r.edges_split > 0);
+  CHECK(CGAL::is_valid_polygon_mesh(r.mesh));
+  CHECK(CGAL::is_triangle_mesh(r.mesh));
+  CHECK(PMP::area(r.mesh) == Approx(PMP::area(m)).epsilon(1e-12));
+  for(auto e : edges(r.mesh))
+    CHECK(std::sqrt(PMP::squared_edge_length(e, r.mesh)) <= r.target_edge_length * (1 + 1e-12));
+
+  // every refined face lies inside its input face: the areas add up face by face
+  std::map<Mesh::Face_index, double> area_by_input;
+  for(auto f : faces(r.mesh)) area_by_input[r.input_face[f]] += PMP::face_area(f, r.mesh);
+  std::size_t wrong = 0;
+  for(auto f : faces(m)) wrong += std::abs(area_by_input[f] - PMP::face_area(f, m)) > 1e-12 * PMP::area(m);
+  CHECK(wrong == 0);
+
+  REQUIRE(r.sites.size() == sites.size());
+  double moved = 0;
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(sites[i], m), point_of(r.sites[i], r.mesh)))));
+  CHECK(moved < 1e-12);
+
+  // a fine mesh is left as it is; refinement is deterministic
+  const auto again = SV::refine_for_sites(r.mesh, r.sites);
+  CHECK(again.edges_split == 0);
+  CHECK(num_vertices(again.mesh) == num_vertices(r.mesh));
+  const auto twice = SV::refine_for_sites(m, sites);
+  std::size_t same = 0;
+  for(auto v : vertices(r.mesh)) same += (twice.mesh.point(v) == r.mesh.point(v));
+  CHECK(same == num_vertices(r.mesh));
+
+  CHECK_THROWS_AS(SV::refine_for_sites(m, std::vector<Location<Mesh> >()), SV::Input_error);
+  SV::Refinement_options tiny;
+  tiny.max_vertices = 100;
+  CHECK_THROWS_AS(SV::refine_for_sites(m, sites, tiny), SV::Input_error);
+}
+
+TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinement][geodesic]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 10, 5);
+  const auto sites = area_uniform_locations(m, 150, 9);
+
+  SV::Geodesic_metric<Mesh> coarse_metric(m);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > coarse(m, coarse_metric, sites);
+  const SV::Fidelity_report before = SV::measure_fidelity(coarse, 3000, 17, 0);
+
+  const auto r = SV::refine_for_sites(m, sites);
+  SV::Geodesic_metric<Mesh> metric(r.mesh);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > fine(r.mesh, metric, r.sites);
+  check_invariants(fine);
+  const SV::Fidelity_report after = SV::measure_fidelity(fine, 3000, 17, 4);
+  INFO("mislabeled: coarse " << before.mislabeled_share << ", refined " << after.mislabeled_share);
+  CHECK(before.mislabeled_share > 0.04);
+  CHECK(before.mislabeled_share > 5 * after.mislabeled_share);
+  CHECK(after.mislabeled_share <= 0.03);
+  CHECK(after.through_wall_upper == 0);
+}
