@@ -158,6 +158,36 @@ color_cells(const std::map<std::int64_t, std::vector<std::int64_t> >& adjacency,
   return colors;
 }
 
+// The site of each face, and which sites share an edge (a cell boundary), sorted.
+template <class PolygonMesh, class FaceSiteMap>
+std::map<std::int64_t, std::vector<std::int64_t> > cell_adjacency(const PolygonMesh& mesh, FaceSiteMap face_site)
+{
+  std::map<std::int64_t, std::vector<std::int64_t> > adjacency;
+  for(auto f : faces(mesh))
+  {
+    const std::int64_t s = static_cast<std::int64_t>(get(face_site, f));
+    if(s >= 0) adjacency[s];
+  }
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh), o = opposite(h, mesh);
+    if(is_border(h, mesh) || is_border(o, mesh)) continue;
+    const std::int64_t a = static_cast<std::int64_t>(get(face_site, face(h, mesh)));
+    const std::int64_t b = static_cast<std::int64_t>(get(face_site, face(o, mesh)));
+    if(a != b && a >= 0 && b >= 0)
+    {
+      adjacency[a].push_back(b);
+      adjacency[b].push_back(a);
+    }
+  }
+  for(auto& a : adjacency)
+  {
+    std::sort(a.second.begin(), a.second.end());
+    a.second.erase(std::unique(a.second.begin(), a.second.end()), a.second.end());
+  }
+  return adjacency;
+}
+
 inline void check_render_options(const Render_options& o)
 {
   auto fail = [](const std::string& what) { throw Input_error("render_arrangement: " + what); };
@@ -259,33 +289,17 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
 
   // lines: the chosen edges (or the cell boundaries), and the border
   std::vector<std::array<std::size_t, 2> > lines;
-  std::map<std::int64_t, std::vector<std::int64_t> > adjacency;
-  for(std::int64_t s : face_sites)
-    if(s >= 0) adjacency[s];
   for(edge_descriptor e : edges(mesh))
   {
     const halfedge_descriptor h = halfedge(e, mesh), o = opposite(h, mesh);
     const bool border = is_border(h, mesh) || is_border(o, mesh);
-    bool line = border ? options.draw_border : false;
-    if(!border)
-    {
-      const std::int64_t a = face_sites[get(fid, face(h, mesh))], b = face_sites[get(fid, face(o, mesh))];
-      if(a != b && a >= 0 && b >= 0)
-      {
-        adjacency[a].push_back(b);
-        adjacency[b].push_back(a);
-      }
-      line = has_constraints ? bool(get(constrained, e)) : a != b;
-    }
+    const bool line = border ? options.draw_border
+                             : has_constraints ? bool(get(constrained, e))
+                                               : face_sites[get(fid, face(h, mesh))] != face_sites[get(fid, face(o, mesh))];
     if(line) lines.push_back({{get(vid, source(h, mesh)), get(vid, target(h, mesh))}});
   }
-  for(auto& a : adjacency)
-  {
-    std::sort(a.second.begin(), a.second.end());
-    a.second.erase(std::unique(a.second.begin(), a.second.end()), a.second.end());
-  }
-  const std::map<std::int64_t, CGAL::IO::Color> cell_colors =
-      internal::color_cells(adjacency, options.palette.empty() ? internal::default_palette() : options.palette);
+  const std::map<std::int64_t, CGAL::IO::Color> cell_colors = internal::color_cells(
+      internal::cell_adjacency(mesh, face_site), options.palette.empty() ? internal::default_palette() : options.palette);
 
   // camera frame: `right` and `upward` span the image plane, `forward` points into the scene
   Render_vec forward = options.view_direction;
