@@ -101,8 +101,16 @@ void metrics_figure(const std::string& dir, const std::string& data)
   std::vector<Image> panels;
   for(const Row& row : rows) panels.push_back(row.render());
   save(dir, "svd_metrics.png", beside(panels));
-  // the README's picture: the biharmonic panel alone
-  save(dir, "svd_lampshade.png", panels.front());
+}
+
+// The README's picture: the biharmonic diagram of the metrics figure, larger.
+void readme_figure(const std::string& dir, const std::string& data)
+{
+  Mesh mesh;
+  SV::IO::read_checked_triangle_mesh(data + "/lampshade_thin.off", mesh);
+  CGAL::Biharmonic_embedding<Mesh> metric(mesh);
+  CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, 60, 7));
+  save(dir, "svd_lampshade.png", SV::IO::render_diagram(diagram, panel(480, 360, {{-0.6, -1.0, -1.2}})));
 }
 
 // Power diagram on a torus: the same sites without and with weights.
@@ -206,6 +214,7 @@ int main(int argc, char** argv)
   try
   {
     metrics_figure(dir, data);
+    readme_figure(dir, data);
     power_figure(dir);
     breaklines_figure(dir);
     lloyd_figure(dir);
