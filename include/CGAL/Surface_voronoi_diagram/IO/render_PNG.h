@@ -72,6 +72,9 @@ struct Render_options
   /// share of the light that does not depend on the orientation (0 to 1); the rest is
   /// Lambertian, two-sided (so the inside of a shell is lit too)
   double ambient = 0.45;
+  /// smooth shading across edges whose faces make an angle below this (degrees, 0 to 90);
+  /// sharper edges, such as the rims of a thin wall, stay sharp (0: flat shading)
+  double crease_angle = 40;
   CGAL::IO::Color background = CGAL::IO::Color(255, 255, 255);
   CGAL::IO::Color edge_color = CGAL::IO::Color(25, 25, 25);
   /// width of cell boundary lines in pixels (0: no lines)
@@ -201,6 +204,7 @@ inline void check_render_options(const Render_options& o)
   if(!std::isfinite(o.up[0]) || !std::isfinite(o.up[1]) || !std::isfinite(o.up[2])) fail("the up vector must be finite");
   if(!(o.margin >= 0 && o.margin < 0.45)) fail("the margin must be in [0, 0.45)");
   if(!(o.ambient >= 0 && o.ambient <= 1)) fail("ambient must be in [0, 1]");
+  if(!(o.crease_angle >= 0 && o.crease_angle <= 90)) fail("crease_angle must be in [0, 90] degrees");
   if(!(o.edge_width >= 0 && o.edge_width <= 64)) fail("edge_width must be in [0, 64] pixels");
   if(!(o.site_radius >= 0 && o.site_radius <= 256)) fail("site_radius must be in [0, 256] pixels");
   if(o.projection == Projection::PERSPECTIVE && !(o.camera_distance > 1 && std::isfinite(o.camera_distance)))
@@ -370,9 +374,53 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
     for(std::size_t v : polygon)
       screen[v] = {{to_sample_x(projected[v].x), to_sample_y(projected[v].y), projected[v].nearness}};
 
-  // z-buffer pass: the nearest face of every sample
+  // shading: two-sided Lambert with a light above, left of and behind the camera, evaluated
+  // at the corners of every face with the normal averaged over the faces around the corner
+  // that are within the crease angle, and interpolated across the face
+  Render_vec light = {{0, 0, 0}};
+  for(int c = 0; c < 3; ++c) light[c] = -0.9 * forward[c] + 0.4 * upward[c] - 0.25 * right[c];
+  internal::render_normalize(light);
+  std::vector<Render_vec> area_normal(polygons.size()), unit_normal(polygons.size());
+  std::vector<std::vector<std::size_t> > faces_at_vertex(positions.size());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    Render_vec normal = {{0, 0, 0}};   // Newell's normal: twice the area, for any planar polygon
+    const auto& polygon = polygons[f];
+    for(std::size_t k = 0; k < polygon.size(); ++k)
+    {
+      const Render_vec& p = positions[polygon[k]];
+      const Render_vec& q = positions[polygon[(k + 1) % polygon.size()]];
+      normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+      faces_at_vertex[polygon[k]].push_back(f);
+    }
+    area_normal[f] = unit_normal[f] = normal;
+    if(!internal::render_normalize(unit_normal[f])) unit_normal[f] = {{0, 0, 0}};
+  }
+  const double cos_crease = std::cos(options.crease_angle * 3.14159265358979323846 / 180);
+  std::vector<std::size_t> first_corner(polygons.size() + 1, 0);
+  for(std::size_t f = 0; f < polygons.size(); ++f) first_corner[f + 1] = first_corner[f] + polygons[f].size();
+  std::vector<double> corner_light(first_corner.back());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t k = 0; k < polygons[f].size(); ++k)
+    {
+      Render_vec normal = unit_normal[f];
+      if(options.crease_angle > 0)
+      {
+        normal = {{0, 0, 0}};
+        for(std::size_t g : faces_at_vertex[polygons[f][k]])
+          if(g == f || internal::render_dot(unit_normal[g], unit_normal[f]) >= cos_crease)
+            for(int c = 0; c < 3; ++c) normal[c] += area_normal[g][c];
+      }
+      const double lambert = internal::render_normalize(normal) ? std::abs(internal::render_dot(normal, light)) : 1.0;
+      corner_light[first_corner[f] + k] = options.ambient + (1 - options.ambient) * lambert;
+    }
+
+  // z-buffer pass: the nearest face of every sample, and its light there
   std::vector<double> nearness(W * H, -std::numeric_limits<double>::infinity());
   std::vector<std::int64_t> owner(W * H, -1);
+  std::vector<float> shade(W * H, 1.f);
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
     const auto& polygon = polygons[f];
@@ -402,33 +450,11 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
           {
             nearness[s] = n;
             owner[s] = std::int64_t(f);
+            shade[s] = float(wa * corner_light[first_corner[f]] + wb * corner_light[first_corner[f] + k]
+                             + wc * corner_light[first_corner[f] + k + 1]);
           }
         }
     }
-  }
-
-  // shading of every face: two-sided Lambert with a light above, left of and behind the camera
-  Render_vec light = {{0, 0, 0}};
-  for(int c = 0; c < 3; ++c) light[c] = -0.9 * forward[c] + 0.4 * upward[c] - 0.25 * right[c];
-  internal::render_normalize(light);
-  std::vector<std::array<double, 3> > face_rgb(polygons.size());
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    Render_vec normal = {{0, 0, 0}};   // Newell's normal: robust for any planar polygon
-    const auto& polygon = polygons[f];
-    for(std::size_t k = 0; k < polygon.size(); ++k)
-    {
-      const Render_vec& p = positions[polygon[k]];
-      const Render_vec& q = positions[polygon[(k + 1) % polygon.size()]];
-      normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    const double lambert = internal::render_normalize(normal) ? std::abs(internal::render_dot(normal, light)) : 1.0;
-    const double intensity = options.ambient + (1 - options.ambient) * lambert;
-    const std::int64_t s = face_sites[f];
-    const CGAL::IO::Color color = s < 0 ? options.unreached_color : cell_colors.at(s);
-    face_rgb[f] = {{intensity * color.red(), intensity * color.green(), intensity * color.blue()}};
   }
 
   // the lines each face may show: those touching one of its vertices (so line ends and
@@ -454,7 +480,9 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
                                     double(options.background.blue())}};
       if(f >= 0)
       {
-        rgb = face_rgb[std::size_t(f)];
+        const std::int64_t site = face_sites[std::size_t(f)];
+        const CGAL::IO::Color color = site < 0 ? options.unreached_color : cell_colors.at(site);
+        rgb = {{shade[s] * color.red(), shade[s] * color.green(), shade[s] * color.blue()}};
         if(half_width > 0)
         {
           if(near_lines_of != f)
@@ -478,7 +506,12 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
   // sites: a dot with a light ring, where the surface does not hide the site
   const double dot = options.site_radius * double(ss), ring = dot + 0.9 * double(ss);
   double near_min = std::numeric_limits<double>::infinity(), near_max = -near_min;
-  for(const auto& p : screen) { near_min = (std::min)(near_min, p[2]); near_max = (std::max)(near_max, p[2]); }
+  for(const auto& polygon : polygons)   // vertices of faces only: isolated ones were not projected
+    for(std::size_t v : polygon)
+    {
+      near_min = (std::min)(near_min, screen[v][2]);
+      near_max = (std::max)(near_max, screen[v][2]);
+    }
   const double tolerance = 1e-4 * (near_max - near_min);
   if(dot > 0)
     for(const auto& p : sites)
