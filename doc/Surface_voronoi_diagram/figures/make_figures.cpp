@@ -187,16 +187,19 @@ void remeshing_figure(const std::string& dir)
   Mesh dual;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, dual);
   const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
-  // the dual in one flat colour with all its edges: the triangles are what matters
+  // the dual in one colour with all its edges and flat shading: the triangles are what matters
   Render_options flat = o;
   flat.palette = {CGAL::IO::Color(200, 215, 235)};
+  flat.crease_angle = 0;
   flat.site_radius = 0;
   flat.edge_width = 1.0;
   const Image dual_image = SV::IO::render_arrangement(dual, CGAL::Constant_property_map<Mesh::Face_index, int>(0),
                                                       std::vector<K::Point_3>(), flat,
                                                       CGAL::parameters::edge_is_constrained_map(
                                                           CGAL::Constant_property_map<Mesh::Edge_index, bool>(true)));
-  save(dir, "svd_remeshing.png", beside({SV::IO::render_diagram(diagram, o), dual_image}));
+  Render_options cells = o;
+  cells.site_radius = 1.5;   // 300 sites: small dots
+  save(dir, "svd_remeshing.png", beside({SV::IO::render_diagram(diagram, cells), dual_image}));
 }
 
 } // namespace
