@@ -1,0 +1,234 @@
+// Generates the manual's figures, one PNG per feature, from bundled or generated data only:
+//   make_figures OUTPUT_DIR [DATA_DIR]
+// DATA_DIR holds lampshade_thin.off (default: examples/Surface_voronoi_diagram/data of the
+// source tree, passed by CMake). Everything is seeded: the images are the same on every run.
+// One translation unit on purpose: the doc build compiles it, and CGAL headers are slow.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/IO/render_PNG.h>
+#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Epick K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = CGAL::Surface_voronoi::generators;
+using SV::IO::Image;
+using SV::IO::Render_options;
+
+namespace {
+
+// Panels side by side with a white gap; the manual's captions name them left to right.
+Image beside(const std::vector<Image>& panels, std::size_t gap = 8)
+{
+  std::size_t width = 0, height = 0;
+  for(const Image& p : panels)
+  {
+    width += p.width + (width > 0 ? gap : 0);
+    height = (std::max)(height, p.height);
+  }
+  Image out(width, height);
+  std::size_t x0 = 0;
+  for(const Image& p : panels)
+  {
+    for(std::size_t y = 0; y < p.height; ++y)
+      for(std::size_t x = 0; x < p.width; ++x) out.set_pixel(x0 + x, y, p.pixel(x, y));
+    x0 += p.width + gap;
+  }
+  return out;
+}
+
+Render_options panel(std::size_t width, std::size_t height, std::array<double, 3> view)
+{
+  Render_options o;
+  o.width = width;
+  o.height = height;
+  o.view_direction = view;
+  return o;
+}
+
+void save(const std::string& dir, const std::string& name, const Image& image)
+{
+  SV::IO::write_PNG(dir + "/" + name, image);
+  std::cout << name << ": " << image.width << " x " << image.height << std::endl;
+}
+
+// The same sites under several metrics, one panel each. A row is a name and a function
+// that builds the diagram and renders it: add a metric by adding a row.
+void metrics_figure(const std::string& dir, const std::string& data)
+{
+  Mesh mesh;
+  SV::IO::read_checked_triangle_mesh(data + "/lampshade_thin.off", mesh);
+  const std::vector<Location> sites = SV::random_sites(mesh, 60, 7);
+  // from above and aside: the outside and, through the top opening, the inside wall
+  const Render_options o = panel(300, 300, {{-0.6, -1.0, -1.2}});
+  struct Row { std::string name; std::function<Image()> render; };
+  const std::vector<Row> rows = {
+    {"biharmonic", [&] {
+       CGAL::Biharmonic_embedding<Mesh> metric(mesh);
+       CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, sites);
+       return SV::IO::render_diagram(diagram, o);
+     }},
+    {"euclidean", [&] {
+       SV::Euclidean_embedding<Mesh> metric(mesh);
+       CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites);
+       return SV::IO::render_diagram(diagram, o);
+     }},
+    {"rvd", [&] {
+       SV::Euclidean_embedding<Mesh> metric(mesh);
+       SV::Diagram_options rvd;
+       rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+       CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites, rvd);
+       return SV::IO::render_diagram(diagram, o);
+     }},
+  };
+  std::vector<Image> panels;
+  for(const Row& row : rows) panels.push_back(row.render());
+  save(dir, "svd_metrics.png", beside(panels));
+}
+
+// The README's picture: the biharmonic diagram of the metrics figure, larger.
+void readme_figure(const std::string& dir, const std::string& data)
+{
+  Mesh mesh;
+  SV::IO::read_checked_triangle_mesh(data + "/lampshade_thin.off", mesh);
+  CGAL::Biharmonic_embedding<Mesh> metric(mesh);
+  CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, 60, 7));
+  save(dir, "svd_lampshade.png", SV::IO::render_diagram(diagram, panel(480, 360, {{-0.6, -1.0, -1.2}})));
+}
+
+// Power diagram on a torus: the same sites without and with weights.
+void power_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_torus(mesh, 1.0, 0.4, 96, 36);
+  const std::vector<Location> sites = SV::random_sites(mesh, 40, 3);
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
+  std::vector<Image> panels;
+  SV::Diagram_options options;
+  options.weights.assign(sites.size(), 0.);
+  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  // every fourth site gets a large weight (squared units: the torus tube radius is 0.4)
+  for(std::size_t i = 0; i < sites.size(); i += 4) options.weights[i] = 0.08;
+  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  save(dir, "svd_power.png", beside(panels));
+}
+
+// Breaklines on a square: an open line and a closed loop, without and with them.
+void breaklines_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_planar_grid(mesh, 41, 41, 1.0, 1.0);   // unjittered: the lines follow grid edges
+  auto breakline = mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+  auto on_lines = [](const K::Point_3& p) {
+    const double x = p.x(), y = p.y(), e = 1e-9;
+    const bool open_line = std::abs(y - 0.3) < e && x > 0.1 - e && x < 0.6 + e;
+    const bool on_loop = ((std::abs(x - 0.55) < e || std::abs(x - 0.85) < e) && y > 0.5 - e && y < 0.9 + e)
+                         || ((std::abs(y - 0.5) < e || std::abs(y - 0.9) < e) && x > 0.55 - e && x < 0.85 + e);
+    return open_line || on_loop;
+  };
+  for(Mesh::Edge_index e : mesh.edges())
+    breakline[e] = on_lines(mesh.point(mesh.source(mesh.halfedge(e)))) && on_lines(mesh.point(mesh.target(mesh.halfedge(e))));
+  std::vector<K::Point_3> sites;
+  for(const Location& l : SV::random_sites(mesh, 14, 11)) sites.push_back(CGAL::Polygon_mesh_processing::construct_point(l, mesh));
+  sites.push_back(K::Point_3(0.7, 0.7, 0));   // one site inside the loop
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const Render_options o = panel(316, 300, {{0.0, 0.35, -1.0}});
+  std::vector<Image> panels;
+  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites), o));
+  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(
+      mesh, metric, sites, SV::Diagram_options(), CGAL::parameters::edge_is_constrained_map(breakline)), o));
+  save(dir, "svd_breaklines.png", beside(panels));
+}
+
+// Lloyd relaxation on a sphere: random sites, then ten steps.
+void lloyd_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_icosphere(mesh, 4, 1.0);
+  const std::vector<Location> sites = SV::random_sites(mesh, 80, 2);
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, sites, 10);
+  const Render_options o = panel(316, 300, {{-0.4, -1.0, -0.5}});
+  typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Diagram;
+  save(dir, "svd_lloyd.png", beside({SV::IO::render_diagram(Diagram(mesh, metric, sites), o),
+                                     SV::IO::render_diagram(Diagram(mesh, metric, relaxed.sites), o)}));
+}
+
+// Remeshing by the dual: blue-noise sites relaxed by Lloyd, their diagram and its dual.
+void remeshing_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_torus(mesh, 1.0, 0.4, 96, 36);
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, 300, 1), 5);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, relaxed.sites);
+  std::vector<K::Point_3> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  if(!SV::dual_triangulation(diagram, std::back_inserter(points), std::back_inserter(triangles)))
+    throw SV::Error("the dual of the torus figure is not a manifold");
+  Mesh dual;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, dual);
+  const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
+  // the dual in one colour with all its edges and flat shading: the triangles are what matters
+  Render_options flat = o;
+  flat.palette = {CGAL::IO::Color(200, 215, 235)};
+  flat.crease_angle = 0;
+  flat.site_radius = 0;
+  flat.edge_width = 1.0;
+  const Image dual_image = SV::IO::render_arrangement(dual, CGAL::Constant_property_map<Mesh::Face_index, int>(0),
+                                                      std::vector<K::Point_3>(), flat,
+                                                      CGAL::parameters::edge_is_constrained_map(
+                                                          CGAL::Constant_property_map<Mesh::Edge_index, bool>(true)));
+  Render_options cells = o;
+  cells.site_radius = 1.5;   // 300 sites: small dots
+  save(dir, "svd_remeshing.png", beside({SV::IO::render_diagram(diagram, cells), dual_image}));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2)
+  {
+    std::cerr << "usage: make_figures OUTPUT_DIR [DATA_DIR]" << std::endl;
+    return 2;
+  }
+  const std::string dir = argv[1];
+  const std::string data = argc > 2 ? argv[2] : "examples/Surface_voronoi_diagram/data";
+  const auto start = std::chrono::steady_clock::now();
+  try
+  {
+    metrics_figure(dir, data);
+    readme_figure(dir, data);
+    power_figure(dir);
+    breaklines_figure(dir);
+    lloyd_figure(dir);
+    remeshing_figure(dir);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "make_figures: " << e.what() << std::endl;
+    return 1;
+  }
+  std::cout << "figures written to " << dir << " in "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s" << std::endl;
+  return 0;
+}

@@ -1,0 +1,37 @@
+// Shows a biharmonic Voronoi diagram in CGAL's Basic_viewer_qt (needs Qt5; built only when
+// CMake finds CGAL's Qt5 component). Without a display, render a PNG instead
+// (CGAL/Surface_voronoi_diagram/IO/render_PNG.h).
+//   draw_diagram [MESH] [SITES]
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/draw.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
+
+#include <cstdlib>
+#include <iostream>
+
+typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Mesh;
+namespace SV = CGAL::Surface_voronoi;
+
+int main(int argc, char** argv)
+{
+  const std::string file = argc > 1 ? argv[1] : "data/lampshade_thin.off";
+  const std::size_t n = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 60;
+  try
+  {
+    Mesh mesh;
+    SV::IO::read_checked_triangle_mesh(file, mesh);
+    CGAL::Biharmonic_embedding<Mesh> metric(mesh);
+    CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, n, 1));
+    SV::draw(diagram, "Biharmonic Voronoi diagram");
+  }
+  catch(const SV::Error& e)
+  {
+    std::cerr << "draw_diagram: " << e.what() << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
