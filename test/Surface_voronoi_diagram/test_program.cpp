@@ -1047,7 +1047,7 @@ TEST_CASE("program: a good run per metric gives a valid arrangement covering the
   const std::vector<V3> sites = face_sites(sphere, 12, 41);
   write_sites(dir / "sites.txt", sites);
 
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
   {
     INFO("metric " << metric);
     const Run r = run_program(dir, { (dir / "sphere.off").string(), "--sites", (dir / "sites.txt").string(),
@@ -1084,6 +1084,32 @@ TEST_CASE("program: a good run per metric gives a valid arrangement covering the
   }
 }
 
+TEST_CASE("program: the geodesic metric refines a coarse mesh, says so, and keeps the input surface", "[program]")
+{
+  Temp_dir dir;
+  const Soup coarse = octahedral_sphere(1);   // 18 vertices for 30 sites
+  const double diag = bbox_diagonal(coarse.points);
+  write_mesh(dir / "coarse.off", coarse);
+  const std::vector<V3> sites = face_sites(coarse, 30, 7);
+  write_sites(dir / "sites.txt", sites);
+  const Run refined = run_program(dir, { (dir / "coarse.off").string(), "--sites", (dir / "sites.txt").string(),
+                                         "--metric", "geodesic", "--output", (dir / "refined.ply").string(), "--stats" });
+  check_success(refined);
+  CHECK(refined.err.find("refined") != std::string::npos);
+  CHECK(std::count(refined.err.begin(), refined.err.end(), '\n') == 1);
+  const Arrangement_ply a = read_arrangement(dir / "refined.ply");
+  const Arrangement_summary s = check_arrangement(a, coarse, sites.size());   // the same surface, refined
+  CHECK(s.labels.size() == sites.size());
+  check_sites_in_own_cells(a, sites, 1e-9 * diag);
+  CHECK(stat_value(parse_stats(refined.out), "insertion") > 0);
+
+  const Run kept = run_program(dir, { (dir / "coarse.off").string(), "--sites", (dir / "sites.txt").string(),
+                                      "--metric", "geodesic", "--no-refine", "--output", (dir / "kept.ply").string() });
+  check_success(kept);
+  CHECK(kept.err.empty());
+  check_arrangement(read_arrangement(dir / "kept.ply"), coarse, sites.size());
+}
+
 TEST_CASE("program: sites in symmetric position (ties through mesh vertices) give proper faces", "[program]")
 {
   // Sites at face centroids of the octahedral sphere: bisectors run exactly through
@@ -1093,7 +1119,7 @@ TEST_CASE("program: sites in symmetric position (ties through mesh vertices) giv
   const Soup sphere = octahedral_sphere(3);
   write_mesh(dir / "sphere.off", sphere);
   write_sites(dir / "sites.txt", face_sites(sphere, 12, 41, true));
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
     for(const bool insert : { false, true })
     {
       INFO("metric " << metric << (insert ? " with --insert-sites" : ""));
@@ -1177,7 +1203,7 @@ TEST_CASE("program: --insert-sites gives a valid arrangement of the input mesh",
   write_mesh(dir / "sphere.obj", sphere);
   const std::vector<V3> sites = face_sites(sphere, 10, 53);
   write_sites(dir / "sites.txt", sites);
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
   {
     INFO("metric " << metric);
     const Run r = run_program(dir, { (dir / "sphere.obj").string(), "--sites", (dir / "sites.txt").string(),
@@ -1210,7 +1236,7 @@ TEST_CASE("program: --stats prints every required key with a numeric value", "[p
   Temp_dir dir;
   const Soup sphere = octahedral_sphere(3);
   write_mesh(dir / "sphere.ply", sphere);
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
   {
     INFO("metric " << metric);
     const Run r = run_program(dir, { (dir / "sphere.ply").string(), "--random", "15", "--metric", metric,
@@ -1250,7 +1276,7 @@ TEST_CASE("program: --sites-out round trip reproduces the diagram byte for byte"
   const Soup sphere = octahedral_sphere(3);
   write_mesh(dir / "sphere.off", sphere);
   const std::string mesh = (dir / "sphere.off").string();
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
   {
     INFO("metric " << metric);
     const Run first = run_program(dir, { mesh, "--random", "20", "--seed", "5", "--metric", metric, "--output",
@@ -1284,7 +1310,7 @@ TEST_CASE("program: the same command twice gives byte-identical output", "[progr
   Temp_dir dir;
   const Soup sphere = octahedral_sphere(3);
   write_mesh(dir / "sphere.off", sphere);
-  for(const std::string metric : { "biharmonic", "euclidean", "rvd" })
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
   {
     INFO("metric " << metric);
     std::vector<std::string> plys, sites, stats;

@@ -15,6 +15,7 @@ linearly (an approximation for metrics that are not embeddings, exact for
 \cgalHasModel `CGAL::Biharmonic_embedding`
 \cgalHasModel `CGAL::Surface_voronoi::Euclidean_embedding`
 \cgalHasModel `CGAL::Surface_voronoi::Vertex_embedding`
+\cgalHasModel `CGAL::Surface_voronoi::Geodesic_metric`
 */
 class SurfaceVoronoiMetric
 {

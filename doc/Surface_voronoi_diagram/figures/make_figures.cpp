@@ -10,6 +10,7 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/IO/render_PNG.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
@@ -88,6 +89,11 @@ void metrics_figure(const std::string& dir, const std::string& data)
     {"euclidean", [&] {
        SV::Euclidean_embedding<Mesh> metric(mesh);
        CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites);
+       return SV::IO::render_diagram(diagram, o);
+     }},
+    {"geodesic", [&] {
+       SV::Geodesic_metric<Mesh> metric(mesh);
+       CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > diagram(mesh, metric, sites);
        return SV::IO::render_diagram(diagram, o);
      }},
     {"rvd", [&] {

@@ -100,6 +100,17 @@ public:
     return d * d;
   }
 
+  /// the geodesic distance between site `i` and the surface point `l` (a location in a face):
+  /// straight inside the site's own face, otherwise from the distances at the face's corners
+  /// by the same point-source update as between vertices
+  double distance(std::size_t i, const Face_location& l)
+  {
+    if(!m_state->marching)
+      throw Input_error("Geodesic_metric: set_sites() must be called before distances are asked for");
+    return m_state->marching->distance_at(i, static_cast<std::uint32_t>(get(m_state->mesh.face_index, l.first)),
+                                          { l.second[0], l.second[1], l.second[2] });
+  }
+
   /// the number of (site, vertex) distances computed since the last `set_sites()`: the work
   /// done, a small multiple of the number of vertices when the sites are spread out
   std::size_t number_of_computed_distances() const

@@ -141,8 +141,6 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   report.empty_cells = diagram.statistics().empty_cells;
   report.broken_cells_before_repair = diagram.statistics().broken_cells_before_repair;
   report.broken_cells = diagram.statistics().broken_cells;
-  auto point = [&](const Face_location& l) { return CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm)); };
-  auto length = [](const auto& a, const auto& b) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b))); };
 
   std::vector<double> g_star(samples);
   std::map<std::size_t, std::vector<std::size_t> > undecided;
@@ -170,13 +168,9 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   {
     const std::size_t s = entry.first;
     marching.set_sites(tm, std::vector<Face_location>(1, sites[s]));
-    const auto sp = point(sites[s]);
     for(std::size_t j : entry.second)
     {
-      const auto x = point(locs[j]);
-      double estimate = (locs[j].first == sites[s].first) ? length(x, sp) : std::numeric_limits<double>::infinity();
-      for(auto v : vertices_around_face(halfedge(locs[j].first, tm), tm))
-        estimate = (std::min)(estimate, std::sqrt(marching.squared_distance(0, v)) + length(x, get(vpm, v)));
+      const double estimate = marching.distance(0, locs[j]);
       if(estimate > band * 3 * g_star[j]) ++through;
       else if(estimate * band >= 3 * g_star[j]) exact_needed[s].push_back(j);
     }

@@ -240,6 +240,41 @@ public:
     return std::numeric_limits<double>::infinity();
   }
 
+  /// the geodesic distance from site `i` to the point of `face` with barycentric coordinates
+  /// `b`: straight in the plane of the site's own face, otherwise the point-source update
+  /// from each edge of the face, or a path through a corner
+  double distance_at(std::size_t i, std::uint32_t face, const std::array<double, 3>& b)
+  {
+    const auto& t = m_mesh.triangles[face];
+    const auto& P = m_mesh.points;
+    Vector_3d x = {{ 0., 0., 0. }};
+    for(int k = 0; k < 3; ++k)
+      for(int c = 0; c < 3; ++c) x[c] += b[k] * P[t[k]][c];
+    if(face == m_seeds[i].face)
+    {
+      Vector_3d s = {{ 0., 0., 0. }};
+      for(int k = 0; k < 3; ++k)
+        for(int c = 0; c < 3; ++c) s[c] += m_seeds[i].barycentric[k] * P[t[k]][c];
+      return length(difference(x, s));
+    }
+    std::array<double, 3> d;
+    for(int k = 0; k < 3; ++k) d[k] = distance(i, t[k]);
+    // the face in its plane: corner 0 at the origin, corner 1 on the x axis
+    const Vector_3d e1 = difference(P[t[1]], P[t[0]]), e2 = difference(P[t[2]], P[t[0]]);
+    const double l1 = length(e1);
+    const double c2x = dot(e2, e1) / l1, c2y = std::sqrt((std::max)(0., dot(e2, e2) - c2x * c2x));
+    const std::array<Vector_2d, 3> q = {{ {{ 0., 0. }}, {{ l1, 0. }}, {{ c2x, c2y }} }};
+    const Vector_2d p = {{ b[1] * l1 + b[2] * c2x, b[2] * c2y }};
+    double best = std::numeric_limits<double>::infinity();
+    for(int k = 0; k < 3; ++k)
+    {
+      const double dx = p[0] - q[k][0], dy = p[1] - q[k][1];
+      best = (std::min)(best, d[k] + std::sqrt(dx * dx + dy * dy));
+      best = (std::min)(best, point_source_update(q[k], q[(k + 1) % 3], p, d[k], d[(k + 1) % 3]));
+    }
+    return best;
+  }
+
   std::size_t accepted_vertices = 0;   // work done so far, for the statistics
 
 private:
