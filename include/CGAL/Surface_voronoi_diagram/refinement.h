@@ -73,6 +73,7 @@ struct Refinement_result
 /// mesh has fewer than about ten vertices per site where the sites are.
 /// \param tm a triangle mesh; it is copied, never modified
 /// \param sites a range of `Polygon_mesh_processing::Face_location`s of `tm`
+/// \param options the target edge length (relative to the site spacing) and a size limit
 /// \param np optional `vertex_point_map` of `tm`
 /// \throws Input_error if there are no sites, or if the refinement would exceed `options.max_vertices`
 template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
