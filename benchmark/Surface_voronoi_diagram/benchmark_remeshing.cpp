@@ -15,6 +15,7 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
@@ -188,6 +189,8 @@ int main(int argc, char** argv)
       CGAL::Biharmonic_embedding<Mesh> bh(m);
       const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
       rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, SV::Diagram_options(), n, lloyd, samples, setup));
+      SV::Geodesic_metric<Mesh> geodesic(m);
+      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, SV::Diagram_options(), n, lloyd, samples, 0.));
     }
     catch(const std::exception& e)
     {
@@ -203,7 +206,7 @@ int main(int argc, char** argv)
     }
   }
   std::cout << "\n| method | models | mean Hausdorff | mean Chamfer | manifold duals |\n| --- | ---: | ---: | ---: | ---: |\n";
-  for(const std::string method : { "RVD", "EDBVD", "biharmonic d=10" })
+  for(const std::string method : { "RVD", "EDBVD", "biharmonic d=10", "geodesic" })
   {
     const auto& rows = by_method[method];
     if(rows.empty()) continue;

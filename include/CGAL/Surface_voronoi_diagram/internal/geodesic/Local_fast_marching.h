@@ -97,9 +97,19 @@ public:
   std::vector<Vector_3d> points;
   std::vector<std::array<std::uint32_t, 3> > triangles;
   std::vector<std::array<double, 3> > edge_lengths;         // per face, of local edge k (corners k, k+1)
-  std::vector<std::uint32_t> ring_offsets, ring_faces;      // faces around each vertex (CSR)
+  /// One face around a vertex a, as the update from a needs it: the two other corners
+  /// (next and previous in the face's order), the three side lengths, and the split of
+  /// each of the two other corners if it is obtuse. Kept together so that an update reads
+  /// one contiguous record instead of three arrays indexed by face.
+  struct Ring_face
+  {
+    std::uint32_t next, prev;
+    std::uint32_t split_next = none, split_prev = none;   // into `splits`
+    double a_next, a_prev, opposite;
+  };
+  std::vector<std::uint32_t> ring_offsets;                  // CSR into `ring`
+  std::vector<Ring_face> ring;
   std::vector<Split> splits;
-  std::vector<std::uint32_t> face_split_offsets;                // splits of each face (CSR into `splits`)
   std::vector<std::uint32_t> vertex_split_offsets, vertex_splits; // splits whose d is the vertex (CSR)
 
   /// `neighbors[f][k]` is the face across local edge k (corners k, k+1), or `none_face`
@@ -118,22 +128,35 @@ public:
     for(const auto& t : triangles)
       for(std::uint32_t v : t) ++ring_offsets[v + 1];
     for(std::size_t v = 0; v < n; ++v) ring_offsets[v + 1] += ring_offsets[v];
-    ring_faces.resize(ring_offsets[n]);
-    std::vector<std::uint32_t> fill(ring_offsets.begin(), ring_offsets.end() - 1);
-    for(std::size_t f = 0; f < m; ++f)
-      for(std::uint32_t v : triangles[f]) ring_faces[fill[v]++] = static_cast<std::uint32_t>(f);
-
     splits.clear();
-    face_split_offsets.assign(m + 1, 0);
+    std::vector<std::array<std::uint32_t, 3> > split_of(m, std::array<std::uint32_t, 3>{{ none, none, none }});
     for(std::size_t f = 0; f < m; ++f)
-    {
       for(int k = 0; k < 3; ++k)
       {
         Split s;
-        if(find_split(f, k, neighbors, none_face, s)) splits.push_back(s);
+        if(find_split(f, k, neighbors, none_face, s))
+        {
+          split_of[f][k] = static_cast<std::uint32_t>(splits.size());
+          splits.push_back(s);
+        }
       }
-      face_split_offsets[f + 1] = static_cast<std::uint32_t>(splits.size());
-    }
+
+    ring.resize(ring_offsets[n]);
+    std::vector<std::uint32_t> fill(ring_offsets.begin(), ring_offsets.end() - 1);
+    for(std::size_t f = 0; f < m; ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int kn = (k + 1) % 3, kp = (k + 2) % 3;
+        Ring_face r;
+        r.next = triangles[f][kn];
+        r.prev = triangles[f][kp];
+        r.split_next = split_of[f][kn];
+        r.split_prev = split_of[f][kp];
+        r.a_next = edge_lengths[f][k];     // local edge k joins corners k and k+1
+        r.a_prev = edge_lengths[f][kp];
+        r.opposite = edge_lengths[f][kn];
+        ring[fill[triangles[f][k]]++] = r;
+      }
     vertex_split_offsets.assign(n + 1, 0);
     for(const Split& s : splits) ++vertex_split_offsets[s.vertex + 1];
     for(std::size_t v = 0; v < n; ++v) vertex_split_offsets[v + 1] += vertex_split_offsets[v];
@@ -402,26 +425,9 @@ private:
   {
     for(std::uint32_t r = m_mesh.ring_offsets[a]; r < m_mesh.ring_offsets[a + 1]; ++r)
     {
-      const std::uint32_t f = m_mesh.ring_faces[r];
-      const auto& t = m_mesh.triangles[f];
-      const auto& len = m_mesh.edge_lengths[f];
-      const int ka = (t[0] == a) ? 0 : (t[1] == a ? 1 : 2);
-      // side lengths: local edge ka joins a and the next corner, edge ka+2 the previous one
-      const double a_next = len[ka], a_prev = len[(ka + 2) % 3], opposite = len[(ka + 1) % 3];
-      for(int step = 1; step <= 2; ++step)
-      {
-        const int kc = (ka + step) % 3;          // the corner to update
-        const std::uint32_t c = t[kc], b = t[(ka + 3 - step) % 3];
-        if(is_accepted(front, c)) continue;
-        const double ac = (step == 1) ? a_next : a_prev, ab = (step == 1) ? a_prev : a_next;
-        double best = da + ac;
-        const double db = accepted_value(front, b);
-        if(db == db) best = (std::min)(best, point_source_update(ab, ac, opposite, da, db));
-        for(std::uint32_t s = m_mesh.face_split_offsets[f]; s < m_mesh.face_split_offsets[f + 1]; ++s)
-          if(m_mesh.splits[s].corner == static_cast<std::uint32_t>(kc))
-            best = (std::min)(best, split_update(front, m_mesh.splits[s]));
-        propose(front, c, best);
-      }
+      const Fast_marching_mesh::Ring_face& rf = m_mesh.ring[r];
+      update_corner(front, da, rf.next, rf.prev, rf.a_next, rf.a_prev, rf.opposite, rf.split_next);
+      update_corner(front, da, rf.prev, rf.next, rf.a_prev, rf.a_next, rf.opposite, rf.split_prev);
     }
     // `a` may be the split vertex of obtuse corners elsewhere
     for(std::uint32_t r = m_mesh.vertex_split_offsets[a]; r < m_mesh.vertex_split_offsets[a + 1]; ++r)
@@ -430,6 +436,23 @@ private:
       const std::uint32_t c = m_mesh.triangles[s.face][s.corner];
       if(!is_accepted(front, c)) propose(front, c, split_update(front, s));
     }
+  }
+
+  // updates corner c of a face (a, b, c) from a, just accepted with value da
+  void update_corner(Front& front, double da, std::uint32_t c, std::uint32_t b, double ac, double ab, double bc,
+                     std::uint32_t split)
+  {
+    // one probe for c: the slot found here stays valid, the lookups below do not insert
+    Slot& sc = front.find_or_insert(c);
+    if(sc.accepted) return;
+    double best = da + ac;
+    const double db = accepted_value(front, b);
+    if(db == db) best = (std::min)(best, point_source_update(ab, ac, bc, da, db));
+    if(split != Fast_marching_mesh::none) best = (std::min)(best, split_update(front, m_mesh.splits[split]));
+    if(!(best < sc.value)) return;
+    sc.value = best;
+    front.heap.push_back(Heap_item{ best, c });
+    std::push_heap(front.heap.begin(), front.heap.end());
   }
 
   // the updates of an obtuse corner through its two acute virtual triangles (c, a, d), (c, d, b)
