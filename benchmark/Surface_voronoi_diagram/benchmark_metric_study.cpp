@@ -10,7 +10,7 @@
 // refinement). Prints one markdown table; not a test.
 //
 //   benchmark_metric_study [--models a,b,...] [--sites 100,1000] [--dims 3,6,10,20,50,100]
-//                          [--samples S] [--seed K] [--refine-ratio R] [--data DIR] [--cgal DIR] [--quick]
+//                          [--samples S] [--seed K] [--refine-ratio R] [--trigger-ratio T] [--metrics rvd,euclidean,biharmonic,geodesic] [--data DIR] [--cgal DIR] [--quick]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,6 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -74,6 +75,9 @@ struct Options
   std::size_t samples = 20000;
   unsigned int seed = 1;
   double refine_ratio = SV::Refinement_options().edge_length_ratio;
+  double trigger_ratio = SV::Refinement_options().trigger_ratio;
+  std::vector<std::string> metrics = { "rvd", "euclidean", "biharmonic", "geodesic" };
+  bool wants(const std::string& metric) const { return std::find(metrics.begin(), metrics.end(), metric) != metrics.end(); }
   std::string data_dir = SVD_BENCH_DATA_DIR, cgal_dir = SVD_BENCH_CGAL_MESHES;
 };
 
@@ -182,11 +186,11 @@ void study(const std::string& name, const Options& o)
   {
     SV::Diagram_options rvd;
     rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-    print_row(name, nv, o.sites[k], "RVD", measure(*references[k], o, 0., [&] {
+    if(o.wants("rvd")) print_row(name, nv, o.sites[k], "RVD", measure(*references[k], o, 0., [&] {
       SV::Euclidean_embedding<Mesh> xyz(m);
       return std::make_unique<Euclidean_diagram>(m, xyz, site_sets[k], rvd);
     }));
-    print_row(name, nv, o.sites[k], "EDBVD (euclidean)", measure(*references[k], o, 0., [&] {
+    if(o.wants("euclidean")) print_row(name, nv, o.sites[k], "EDBVD (euclidean)", measure(*references[k], o, 0., [&] {
       SV::Euclidean_embedding<Mesh> xyz(m);
       return std::make_unique<Euclidean_diagram>(m, xyz, site_sets[k]);
     }));
@@ -195,6 +199,7 @@ void study(const std::string& name, const Options& o)
   typedef CGAL::Biharmonic_embedding<Mesh> Biharmonic;
   for(std::size_t d : o.dims)
   {
+    if(!o.wants("biharmonic")) break;
     std::unique_ptr<Biharmonic> embedding;
     double embedding_seconds = 0;
     std::string error;
@@ -225,12 +230,13 @@ void study(const std::string& name, const Options& o)
 
   // the geodesic metric, with the refinement it asks for on coarse meshes (timed); the
   // refined mesh is the same surface, but the reference must be rebuilt on it
-  for(std::size_t k = 0; k < o.sites.size(); ++k)
+  for(std::size_t k = 0; k < o.sites.size() && o.wants("geodesic"); ++k)
   {
     typedef SV::Geodesic_metric<Mesh> Geodesic;
     const auto t0 = std::chrono::steady_clock::now();
     SV::Refinement_options ro;
     ro.edge_length_ratio = o.refine_ratio;
+    ro.trigger_ratio = o.trigger_ratio;
     const auto refined = SV::refine_for_sites(m, site_sets[k], ro);
     const double refinement = seconds_since(t0);
     std::string label = "geodesic";
@@ -255,7 +261,7 @@ int usage(const char* why)
 {
   std::fprintf(stderr, "benchmark_metric_study: %s\n", why);
   std::fprintf(stderr, "usage: benchmark_metric_study [--models a,b] [--sites 100,1000] [--dims 3,6,10] "
-                       "[--samples S] [--seed K] [--refine-ratio R] [--data DIR] [--cgal DIR] [--quick]\n");
+                       "[--samples S] [--seed K] [--refine-ratio R] [--trigger-ratio T] [--metrics rvd,euclidean,biharmonic,geodesic] [--data DIR] [--cgal DIR] [--quick]\n");
   return 1;
 }
 
@@ -281,6 +287,8 @@ int main(int argc, char** argv)
       else if(a == "--samples") o.samples = std::stoul(value());
       else if(a == "--seed") o.seed = static_cast<unsigned int>(std::stoul(value()));
       else if(a == "--refine-ratio") o.refine_ratio = std::stod(value());
+      else if(a == "--metrics") o.metrics = split_list(value());
+      else if(a == "--trigger-ratio") o.trigger_ratio = std::stod(value());
       else if(a == "--data") o.data_dir = value();
       else if(a == "--cgal") o.cgal_dir = value();
       else if(a == "--quick") { o.models = { "u_fold", "lampshade" }; o.sites = { 100 }; o.dims = { 10 }; o.samples = 5000; }

@@ -27,8 +27,11 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
   CHECK(CGAL::is_valid_polygon_mesh(r.mesh));
   CHECK(CGAL::is_triangle_mesh(r.mesh));
   CHECK(PMP::area(r.mesh) == Approx(PMP::area(m)).epsilon(1e-12));
+  // every edge is below the trigger, and the ones the refinement made are near the target
+  std::size_t long_edges = 0;
   for(auto e : edges(r.mesh))
-    CHECK(std::sqrt(PMP::squared_edge_length(e, r.mesh)) <= r.target_edge_length * (1 + 1e-12));
+    long_edges += std::sqrt(PMP::squared_edge_length(e, r.mesh)) > r.target_edge_length * 0.75 / (1. / 3.);
+  CHECK(long_edges == 0);
 
   // every refined face lies inside its input face: the areas add up face by face
   std::map<Mesh::Face_index, double> area_by_input;
@@ -43,10 +46,17 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
     moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(sites[i], m), point_of(r.sites[i], r.mesh)))));
   CHECK(moved < 1e-12);
 
-  // a fine mesh is left as it is; refinement is deterministic
+  // a fine mesh is left as it is; so is a mesh whose edges are all below the trigger
   const auto again = SV::refine_for_sites(r.mesh, r.sites);
   CHECK(again.edges_split == 0);
   CHECK(num_vertices(again.mesh) == num_vertices(r.mesh));
+  SV::Refinement_options lenient;
+  lenient.trigger_ratio = 100;
+  CHECK(SV::refine_for_sites(m, sites, lenient).edges_split == 0);
+  SV::Refinement_options inverted;
+  inverted.trigger_ratio = 0.1;   // below edge_length_ratio
+  CHECK_THROWS_AS(SV::refine_for_sites(m, sites, inverted), SV::Input_error);
+  // refinement is deterministic
   const auto twice = SV::refine_for_sites(m, sites);
   std::size_t same = 0;
   for(auto v : vertices(r.mesh)) same += (twice.mesh.point(v) == r.mesh.point(v));
