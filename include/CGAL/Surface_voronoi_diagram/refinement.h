@@ -45,7 +45,7 @@ struct Refinement_options
   /// geodesic diagram at 100 and 1000 sites.
   double trigger_ratio = 0.75;
   /// see `trigger_ratio`
-  double edge_length_ratio = 1. / 3.;
+  double edge_length_ratio = 0.4;
   /// refusing to grow the mesh beyond this many vertices (an `Input_error`)
   std::size_t max_vertices = 20000000;
 };
