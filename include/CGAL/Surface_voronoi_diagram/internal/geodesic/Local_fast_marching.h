@@ -96,7 +96,6 @@ public:
 
   std::vector<Vector_3d> points;
   std::vector<std::array<std::uint32_t, 3> > triangles;
-  std::vector<std::array<double, 3> > edge_lengths;         // per face, of local edge k (corners k, k+1)
   /// One face around a vertex a, as the update from a needs it: the two other corners
   /// (next and previous in the face's order), the three side lengths, and the split of
   /// each of the two other corners if it is obtuse. Kept together so that an update reads
@@ -120,7 +119,7 @@ public:
     points = pts;
     triangles = tris;
     const std::size_t n = points.size(), m = triangles.size();
-    edge_lengths.resize(m);
+    std::vector<std::array<double, 3> > edge_lengths(m);   // per face, of local edge k (corners k, k+1)
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
         edge_lengths[f][k] = length(difference(points[triangles[f][(k + 1) % 3]], points[triangles[f][k]]));
