@@ -20,7 +20,6 @@
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
-#include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -190,14 +189,8 @@ int main(int argc, char** argv)
       CGAL::Biharmonic_embedding<Mesh> bh(m);
       const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
       rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, SV::Diagram_options(), n, lloyd, samples, setup));
-      // the geodesic metric on the mesh refined for the sites (the same surface; the
-      // long faces of some models would otherwise make every front explore far)
-      const auto t2 = std::chrono::steady_clock::now();
-      const auto refined = SV::refine_for_sites(m, SV::blue_noise_sites(m, n, 1));
-      SV::Geodesic_metric<Mesh> geodesic(refined.mesh);
-      const double refinement = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
-      rows.push_back(remesh(entry.first, "geodesic", refined.mesh, geodesic, SV::Diagram_options(), n, lloyd, samples,
-                            refinement));
+      SV::Geodesic_metric<Mesh> geodesic(m);
+      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, SV::Diagram_options(), n, lloyd, samples, 0.));
     }
     catch(const std::exception& e)
     {
