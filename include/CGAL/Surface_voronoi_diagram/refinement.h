@@ -11,13 +11,14 @@
 #define CGAL_SURFACE_VORONOI_DIAGRAM_REFINEMENT_H
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/working_copy.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -109,17 +110,9 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, const Refin
   Result r;
   Mesh& m = r.mesh;
   std::vector<std::pair<Input_face, F> > f2f;
-  CGAL::copy_face_graph(tm, m, CGAL::parameters::vertex_point_map(vpm).face_to_face_output_iterator(std::back_inserter(f2f)));
-  r.input_face = m.template add_property_map<F, Input_face>("f:svd_input_face", boost::graph_traits<TriangleMesh>::null_face()).first;
-  for(const auto& p : f2f) r.input_face[p.second] = p.first;
+  r.input_face = internal::copy_with_input_faces(tm, vpm, m, f2f);
 
-  double area = 0;
-  for(F f : faces(m))
-  {
-    const H h = halfedge(f, m);
-    area += std::sqrt(CGAL::to_double(CGAL::squared_area(m.point(source(h, m)), m.point(target(h, m)),
-                                                         m.point(target(next(h, m), m)))));
-  }
+  const double area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(m));
   r.target_edge_length = options.edge_length_ratio * std::sqrt(area / double(n));
   const double trigger = options.trigger_ratio * std::sqrt(area / double(n));
   const double limit2 = r.target_edge_length * r.target_edge_length;

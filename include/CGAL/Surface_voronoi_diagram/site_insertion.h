@@ -11,6 +11,7 @@
 #define CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/working_copy.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
@@ -18,7 +19,6 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -75,14 +75,12 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
   Result r;
   Mesh& m = r.mesh;
   std::vector<std::pair<Input_face, F> > f2f;
-  CGAL::copy_face_graph(tm, m, CGAL::parameters::vertex_point_map(vpm).face_to_face_output_iterator(std::back_inserter(f2f)));
-  r.input_face = m.template add_property_map<F, Input_face>("f:svd_input_face", boost::graph_traits<TriangleMesh>::null_face()).first;
+  r.input_face = internal::copy_with_input_faces(tm, vpm, m, f2f);
   std::unordered_map<std::size_t, std::vector<F> > sub_faces;   // by index in f2f order
   std::vector<F> copy_of;                                       // input face order -> copy
   std::unordered_map<Input_face, std::size_t, boost::hash<Input_face> > input_index;
   for(std::size_t k = 0; k < f2f.size(); ++k)
   {
-    put(r.input_face, f2f[k].second, f2f[k].first);
     input_index[f2f[k].first] = k;
     sub_faces[k].push_back(f2f[k].second);
   }

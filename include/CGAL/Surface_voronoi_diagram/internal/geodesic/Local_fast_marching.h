@@ -39,43 +39,40 @@ inline double dot(const Vector_3d& a, const Vector_3d& b) { return a[0] * b[0] +
 inline double length(const Vector_3d& a) { return std::sqrt(dot(a, a)); }
 
 /// The distance at `c` of a point source that is at distance `da` from `a` and `db` from `b`
-/// and lies on the other side of the line ab than `c` (all in one plane); +infinity when no
-/// such source exists or when the straight path from it to `c` misses the segment ab.
-inline double point_source_update(const Vector_2d& a, const Vector_2d& b, const Vector_2d& c, double da, double db)
+/// and lies on the other side of the line ab than `c`, in the frame where a = (0, 0),
+/// b = (ab, 0) and c = (cx, cy), cy > 0; +infinity when no such source exists or when the
+/// straight path from it to `c` misses the segment ab.
+inline double point_source_in_frame(double ab, double cx, double cy, double da, double db)
 {
   const double inf = std::numeric_limits<double>::infinity();
-  const double ux = b[0] - a[0], uy = b[1] - a[1];
-  const double L = std::sqrt(ux * ux + uy * uy);
-  if(!(L > 0)) return inf;
-  // frame: a at the origin, b at (L, 0), c above
-  const double cx = ((c[0] - a[0]) * ux + (c[1] - a[1]) * uy) / L;
-  const double cy = std::abs((c[1] - a[1]) * ux - (c[0] - a[0]) * uy) / L;
-  if(!(cy > 0)) return inf;
-  const double sx = (da * da - db * db + L * L) / (2 * L);
+  if(!(ab > 0) || !(cy > 0)) return inf;
+  const double sx = (da * da - db * db + ab * ab) / (2 * ab);
   const double sy2 = da * da - sx * sx;
   if(sy2 < 0) return inf;
   const double sy = -std::sqrt(sy2);
   const double x0 = sx + (-sy / (cy - sy)) * (cx - sx);   // where the path from the source meets line ab
-  if(x0 < 0 || x0 > L) return inf;
+  if(x0 < 0 || x0 > ab) return inf;
   return std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
+}
+
+/// The same update with a, b and c anywhere in the plane.
+inline double point_source_update(const Vector_2d& a, const Vector_2d& b, const Vector_2d& c, double da, double db)
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1];
+  const double L = std::sqrt(ux * ux + uy * uy);
+  if(!(L > 0)) return std::numeric_limits<double>::infinity();
+  const double cx = ((c[0] - a[0]) * ux + (c[1] - a[1]) * uy) / L;
+  const double cy = std::abs((c[1] - a[1]) * ux - (c[0] - a[0]) * uy) / L;
+  return point_source_in_frame(L, cx, cy, da, db);
 }
 
 /// The same update on a triangle abc given by its side lengths.
 inline double point_source_update(double ab, double ac, double bc, double da, double db)
 {
-  const double inf = std::numeric_limits<double>::infinity();
-  if(!(ab > 0)) return inf;
+  if(!(ab > 0)) return std::numeric_limits<double>::infinity();
   const double cx = (ac * ac - bc * bc + ab * ab) / (2 * ab);
   const double cy2 = ac * ac - cx * cx;
-  if(!(cy2 > 0)) return inf;
-  const double cy = std::sqrt(cy2);
-  const double sx = (da * da - db * db + ab * ab) / (2 * ab);
-  const double sy2 = da * da - sx * sx;
-  if(sy2 < 0) return inf;
-  const double sy = -std::sqrt(sy2);
-  const double x0 = sx + (-sy / (cy - sy)) * (cx - sx);
-  if(x0 < 0 || x0 > ab) return inf;
-  return std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
+  return point_source_in_frame(ab, cx, cy2 > 0 ? std::sqrt(cy2) : 0., da, db);
 }
 
 /// The mesh as fast marching needs it: faces around each vertex and, for each corner with
@@ -110,6 +107,15 @@ public:
   std::vector<Ring_face> ring;
   std::vector<Split> splits;
   std::vector<std::uint32_t> vertex_split_offsets, vertex_splits; // splits whose d is the vertex (CSR)
+
+  /// the point of face `f` with barycentric coordinates `b`
+  Vector_3d point_at(std::uint32_t f, const std::array<double, 3>& b) const
+  {
+    Vector_3d x = {{ 0., 0., 0. }};
+    for(int k = 0; k < 3; ++k)
+      for(int c = 0; c < 3; ++c) x[c] += b[k] * points[triangles[f][k]][c];
+    return x;
+  }
 
   /// `neighbors[f][k]` is the face across local edge k (corners k, k+1), or `none_face`
   template <class Neighbors>
@@ -269,16 +275,8 @@ public:
   {
     const auto& t = m_mesh.triangles[face];
     const auto& P = m_mesh.points;
-    Vector_3d x = {{ 0., 0., 0. }};
-    for(int k = 0; k < 3; ++k)
-      for(int c = 0; c < 3; ++c) x[c] += b[k] * P[t[k]][c];
     if(face == m_seeds[i].face)
-    {
-      Vector_3d s = {{ 0., 0., 0. }};
-      for(int k = 0; k < 3; ++k)
-        for(int c = 0; c < 3; ++c) s[c] += m_seeds[i].barycentric[k] * P[t[k]][c];
-      return length(difference(x, s));
-    }
+      return length(difference(m_mesh.point_at(face, b), m_mesh.point_at(face, m_seeds[i].barycentric)));
     std::array<double, 3> d;
     for(int k = 0; k < 3; ++k) d[k] = distance(i, t[k]);
     // the face in its plane: corner 0 at the origin, corner 1 on the x axis
@@ -370,9 +368,15 @@ private:
   void propose(Front& front, std::uint32_t v, double value)
   {
     Slot& s = front.find_or_insert(v);
-    if(s.accepted || !(value < s.value)) return;
+    if(!s.accepted) lower(front, s, value);
+  }
+
+  // lowers the tentative value of a vertex not accepted yet, and queues it
+  static void lower(Front& front, Slot& s, double value)
+  {
+    if(!(value < s.value)) return;
     s.value = value;
-    front.heap.push_back(Heap_item{ value, v });
+    front.heap.push_back(Heap_item{ value, s.vertex });
     std::push_heap(front.heap.begin(), front.heap.end());
   }
 
@@ -383,9 +387,7 @@ private:
     front.started = true;
     const Marching_seed& s = m_seeds[i];
     const auto& t = m_mesh.triangles[s.face];
-    Vector_3d p = {{ 0., 0., 0. }};
-    for(int k = 0; k < 3; ++k)
-      for(int c = 0; c < 3; ++c) p[c] += s.barycentric[k] * m_mesh.points[t[k]][c];
+    const Vector_3d p = m_mesh.point_at(s.face, s.barycentric);
     for(int k = 0; k < 3; ++k)
       propose(front, t[k], length(difference(m_mesh.points[t[k]], p)));
   }
@@ -448,10 +450,7 @@ private:
     const double db = accepted_value(front, b);
     if(db == db) best = (std::min)(best, point_source_update(ab, ac, bc, da, db));
     if(split != Fast_marching_mesh::none) best = (std::min)(best, split_update(front, m_mesh.splits[split]));
-    if(!(best < sc.value)) return;
-    sc.value = best;
-    front.heap.push_back(Heap_item{ best, c });
-    std::push_heap(front.heap.begin(), front.heap.end());
+    lower(front, sc, best);
   }
 
   // the updates of an obtuse corner through its two acute virtual triangles (c, a, d), (c, d, b)
