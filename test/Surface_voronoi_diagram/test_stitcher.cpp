@@ -1,0 +1,371 @@
+// Direct tests of stitch() (CGAL/Surface_voronoi_diagram/internal/stitching.h): small meshes,
+// per-vertex squared distances to sites (both faces of an edge see the same corner values),
+// every face cut by Face_cutter, then the partition is checked against independent oracles:
+// no cracks, areas, one vertex per point, owners, the crossings on every mesh edge (counted
+// here with exact rationals), and a valid polygon mesh built from the pieces. The adversarial
+// cases put Voronoi vertices exactly on mesh edges and vertices and bisectors along edges.
+#include <catch2/catch.hpp>
+
+#include <CGAL/Surface_voronoi_diagram/internal/stitching.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace {
+
+namespace SVI = CGAL::Surface_voronoi::internal;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel St_kernel;
+typedef CGAL::Surface_mesh<St_kernel::Point_3> St_mesh;
+typedef SVI::Indexed_mesh<St_mesh> St_indexed;
+typedef St_kernel::Vector_3 St_vector;
+typedef std::array<double, 3> St_point;
+typedef CGAL::Exact_rational St_q;
+
+St_mesh st_make(const std::vector<St_point>& points, const std::vector<std::array<int, 3> >& faces)
+{
+  St_mesh m;
+  std::vector<St_mesh::Vertex_index> v;
+  for(const St_point& p : points) v.push_back(m.add_vertex(St_kernel::Point_3(p[0], p[1], p[2])));
+  for(const auto& f : faces) REQUIRE(m.add_face(v[f[0]], v[f[1]], v[f[2]]) != St_mesh::null_face());
+  return m;
+}
+
+// the square [0, s]^2 cut along its diagonal (0,0)-(s,s)
+St_mesh st_square(double s) { return st_make({ { 0, 0, 0 }, { s, 0, 0 }, { s, s, 0 }, { 0, s, 0 } }, { { 0, 1, 2 }, { 0, 2, 3 } }); }
+
+// six triangles around the origin
+St_mesh st_fan() { return st_make({ { 0, 0, 0 }, { 8, 0, 0 }, { 4, 7, 0 }, { -4, 7, 0 }, { -8, 0, 0 }, { -4, -7, 0 }, { 4, -7, 0 } },
+                 { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 5 }, { 0, 5, 6 }, { 0, 6, 1 } }); }
+
+// n x n unit cells, diagonals in both directions, height z(x, y)
+template <class Height>
+St_mesh st_grid(int n, const Height& z)
+{
+  std::vector<St_point> p;
+  std::vector<std::array<int, 3> > f;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) p.push_back({{ double(i), double(j), z(i, j) }});
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if((i + j) % 2 == 0) { f.push_back({{ a, b, c }}); f.push_back({{ a, c, d }}); }
+      else { f.push_back({{ a, b, d }}); f.push_back({{ b, c, d }}); }
+    }
+  return st_make(p, f);
+}
+
+// One stitched mesh. The mesh is kept here (the index maps of `mesh` refer to it), so a run is
+// neither copied nor reused.
+struct St_run
+{
+  St_mesh surface;
+  St_indexed mesh;
+  std::vector<std::vector<double> > field;   // field[site][vertex]
+  std::vector<std::vector<SVI::Face_field> > candidates;
+  std::vector<SVI::Face_cut> cuts;
+  SVI::Partition part;
+};
+
+// every site a candidate of every face (odd faces: only those not dominated, as the pipeline
+// keeps them, so that lists differ across edges), cuts and the stitch
+std::unique_ptr<St_run> st_run_fields(const St_mesh& m, const std::vector<std::vector<double> >& field)
+{
+  std::unique_ptr<St_run> run(new St_run);
+  St_run& r = *run;
+  r.surface = m;
+  r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
+  r.field = field;
+  r.candidates.assign(r.mesh.number_of_faces(), {});
+  for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+  {
+    const auto& t = r.mesh.triangles[f];
+    for(std::size_t s = 0; s < field.size(); ++s)
+      r.candidates[f].push_back({ std::uint32_t(s), {{ field[s][t[0]], field[s][t[1]], field[s][t[2]] }} });
+    if(f % 2) SVI::clean_candidate_list(r.candidates[f]);
+    r.cuts.push_back(SVI::Face_cutter(r.candidates[f]).cut());
+  }
+  SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
+  return run;
+}
+
+// the fields of a linear embedding: squared distances from the vertices to the sites
+std::unique_ptr<St_run> st_run(const St_mesh& m, const std::vector<St_point>& sites)
+{
+  std::vector<std::vector<double> > field(sites.size());
+  for(std::size_t s = 0; s < sites.size(); ++s)
+    for(St_mesh::Vertex_index v : vertices(m))
+    {
+      const St_kernel::Point_3& p = m.point(v);
+      field[s].push_back(CGAL::square(p.x() - sites[s][0]) + CGAL::square(p.y() - sites[s][1]) + CGAL::square(p.z() - sites[s][2]));
+    }
+  return st_run_fields(m, field);
+}
+
+// number of points strictly inside edge e where the lowest (value, site) pair changes,
+// from the corner values taken as exact
+int st_changes_along(const St_run& r, std::size_t e)
+{
+  const std::size_t a = r.mesh.edge_vertices[e][0], b = r.mesh.edge_vertices[e][1];
+  const std::size_t n = r.field.size();
+  auto value = [&](std::size_t i, const St_q& t) -> St_q { return (1 - t) * St_q(r.field[i][a]) + t * St_q(r.field[i][b]); };
+  std::vector<St_q> ts = { St_q(0), St_q(1) };   // 0, 1 and every crossing of two sites
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < i; ++j)
+    {
+      const St_q h0 = value(i, 0) - value(j, 0), h1 = value(i, 1) - value(j, 1);
+      if(h0 != h1 && h0 / (h0 - h1) > 0 && h0 / (h0 - h1) < 1) ts.push_back(h0 / (h0 - h1));
+    }
+  std::sort(ts.begin(), ts.end());
+  ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
+  int changes = 0;
+  std::size_t previous = n;
+  for(std::size_t k = 0; k + 1 < ts.size(); ++k)   // the lowest pair between two crossings
+  {
+    const St_q t = (ts[k] + ts[k + 1]) / 2;
+    std::size_t best = 0;
+    for(std::size_t i = 1; i < n; ++i)
+      if(value(i, t) < value(best, t)) best = i;
+    changes += previous != n && best != previous;
+    previous = best;
+  }
+  return changes;
+}
+
+// how many vertices used by pieces lie within `tol` of x
+std::size_t st_near(const St_run& r, const St_point& x, double tol)
+{
+  std::set<std::size_t> ids;
+  for(const SVI::Partition::Piece& p : r.part.pieces)
+    for(std::size_t id : p.vertices)
+    {
+      const St_point& q = r.part.vertices[id].point;
+      if(std::abs(q[0] - x[0]) + std::abs(q[1] - x[1]) + std::abs(q[2] - x[2]) <= tol) ids.insert(id);
+    }
+  return ids.size();
+}
+
+St_vector st_vec(const St_point& p) { return St_vector(p[0], p[1], p[2]); }
+
+// Every invariant of a partition; returns the area owned by each site.
+std::vector<double> st_check(const St_run& r)
+{
+  const SVI::Partition& part = r.part;
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  std::set<std::size_t> used;
+  std::vector<double> site_area(r.field.size(), 0.);
+  double total = 0;
+  for(const SVI::Partition::Piece& p : part.pieces)
+  {
+    REQUIRE(p.vertices.size() >= 3);
+    REQUIRE(p.site < r.field.size());
+    St_vector newell(0, 0, 0), x(0, 0, 0);   // twice the area times the normal; the centroid
+    for(std::size_t k = 0; k < p.vertices.size(); ++k)
+    {
+      const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % p.vertices.size()];
+      REQUIRE(u < part.vertices.size());
+      used.insert(u);
+      ++directed[{ u, w }];
+      newell = newell + CGAL::cross_product(st_vec(part.vertices[u].point), st_vec(part.vertices[w].point));
+      x = x + st_vec(part.vertices[u].point) / double(p.vertices.size());
+    }
+    // positive area, oriented as its face
+    const auto& t = r.mesh.triangles[p.face];
+    const St_vector a = st_vec(r.mesh.points[t[0]]), b = st_vec(r.mesh.points[t[1]]), c = st_vec(r.mesh.points[t[2]]);
+    const St_vector face_n = CGAL::cross_product(b - a, c - a);
+    CHECK(newell * face_n > 0);
+    total += 0.5 * std::sqrt(newell.squared_length());
+    site_area[p.site] += 0.5 * std::sqrt(newell.squared_length());
+    // the owner at the centroid, from the fields interpolated at its barycentric coordinates
+    auto bary = [&](const St_vector& u, const St_vector& w) { return CGAL::cross_product(u - x, w - x) * face_n / face_n.squared_length(); };
+    const double b0 = bary(b, c), b1 = bary(c, a), b2 = bary(a, b);
+    auto value = [&](std::size_t s) { return b0 * r.field[s][t[0]] + b1 * r.field[s][t[1]] + b2 * r.field[s][t[2]]; };
+    double lowest = value(p.site), scale = 0;
+    for(std::size_t s = 0; s < r.field.size(); ++s)
+    {
+      lowest = (std::min)(lowest, value(s));
+      for(int k = 0; k < 3; ++k) scale = (std::max)(scale, std::abs(r.field[s][t[k]]));
+    }
+    CHECK(value(p.site) <= lowest + 1e-9 * scale);
+  }
+  CHECK(std::abs(total - r.mesh.total_area) <= 1e-12 * r.mesh.total_area);
+  // no cracks: every piece edge once, matched by its reverse unless it runs along a border edge
+  auto on_edge = [&](std::size_t id, std::size_t e) {
+    const SVI::Partition::Vertex& v = part.vertices[id];
+    if(v.kind == SVI::Partition::AT_CORNER) return v.element == r.mesh.edge_vertices[e][0] || v.element == r.mesh.edge_vertices[e][1];
+    return v.kind == SVI::Partition::ON_EDGE && v.element == e;
+  };
+  std::vector<bool> border(r.mesh.number_of_edges(), false);
+  for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      if(r.mesh.neighbors[f][k] == St_indexed::none) border[r.mesh.edges[f][k]] = true;
+  for(const auto& entry : directed)
+  {
+    const std::size_t u = entry.first.first, w = entry.first.second;
+    CHECK(entry.second == 1);
+    if(directed.count({ w, u })) continue;
+    bool on_border = false;
+    for(std::size_t e = 0; e < border.size(); ++e) on_border |= border[e] && on_edge(u, e) && on_edge(w, e);
+    INFO("unmatched piece edge " << u << " -> " << w);
+    CHECK(on_border);
+  }
+  // one vertex per point: no two used ids at the same position, nor a rounding error apart
+  // (an exact tie named differently by two faces must become one vertex)
+  for(std::size_t id : used)
+  {
+    const SVI::Partition::Vertex& v = part.vertices[id];
+    if(v.kind == SVI::Partition::AT_CORNER) CHECK(v.point == r.mesh.points[v.element]);
+    CHECK(st_near(r, v.point, 1e-9) == 1);
+  }
+  // the crossings on each mesh edge: one vertex each
+  for(std::size_t e = 0; e < r.mesh.number_of_edges(); ++e)
+  {
+    int on = 0;
+    for(std::size_t id : used) on += part.vertices[id].kind == SVI::Partition::ON_EDGE && part.vertices[id].element == e;
+    INFO("mesh edge " << e);
+    CHECK(on == st_changes_along(r, e));
+  }
+  // the pieces as faces of a polygon mesh
+  St_mesh out;
+  std::map<std::size_t, St_mesh::Vertex_index> vmap;
+  for(std::size_t id : used) vmap[id] = out.add_vertex(CGAL::ORIGIN + st_vec(part.vertices[id].point));
+  for(const SVI::Partition::Piece& p : part.pieces)
+  {
+    std::vector<St_mesh::Vertex_index> vs;
+    for(std::size_t id : p.vertices) vs.push_back(vmap[id]);
+    CHECK(CGAL::Euler::add_face(vs, out) != St_mesh::null_face());
+  }
+  CHECK(CGAL::is_valid_polygon_mesh(out));
+  return site_area;
+}
+
+// stitches squared distances to `sites` and checks it; each point of `single` must be one vertex
+std::vector<double> st_case(const St_mesh& m, const std::vector<St_point>& sites, const std::vector<St_point>& single = {})
+{
+  const std::unique_ptr<St_run> r = st_run(m, sites);
+  const std::vector<double> area = st_check(*r);
+  for(const St_point& x : single) CHECK(st_near(*r, x, 1e-12) == 1);
+  return area;
+}
+
+void st_expect_areas(const std::vector<double>& area, const std::vector<double>& expected)
+{
+  REQUIRE(area.size() == expected.size());
+  for(std::size_t s = 0; s < area.size(); ++s) CHECK(area[s] == Approx(expected[s]).epsilon(1e-12).margin(1e-12));
+}
+
+} // namespace
+
+TEST_CASE("stitch: generic sites on two triangles, a fan and a curved grid", "[stitcher]")
+{
+  st_case(st_square(8), { { 1, 2, 0 }, { 6.3, 1.1, 0 }, { 3.7, 6.2, 0 }, { 7.1, 7.4, 0 } });
+  st_case(st_fan(), { { 1, 1, 0 }, { -3, 2.5, 0 }, { -1, -4, 0 }, { 5, -2, 0.5 } });
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-0.5, 6.5);
+  for(int n = 0; n < 8; ++n)
+  {
+    std::vector<St_point> sites;
+    for(int k = 0; k < 9; ++k) sites.push_back({{ u(rng), u(rng), 0.3 * u(rng) }});
+    const auto r = st_run(st_grid(6, [](int i, int j) { return 0.4 * std::sin(0.9 * i) * std::cos(0.7 * j); }), sites);
+    INFO("random configuration " << n);
+    st_check(*r);
+    CHECK(r->part.pieces.size() > r->mesh.number_of_faces());
+  }
+}
+
+TEST_CASE("stitch: a Voronoi vertex exactly on a mesh edge", "[stitcher]")
+{
+  // three sites at distance 5 from (4, 4), on the diagonal of the square
+  st_case(st_square(8), { { 7, 8, 0 }, { 0, 7, 0 }, { 4, -1, 0 } }, { { 4, 4, 0 } });
+  // at points that are not doubles: (19/6, 19/6), (29/6, 29/6)
+  st_case(st_square(8), { { 4, -1, 0 }, { 0, 6, 0 }, { 5, 7, 0 } }, { { 19. / 6, 19. / 6, 0 } });
+  st_case(st_square(8), { { 1, 3, 0 }, { 8, 2, 0 }, { 4, 9, 0 } }, { { 29. / 6, 29. / 6, 0 } });
+  // on the border edge y = 0, at (4, 0)
+  st_case(st_square(8), { { 4, 5, 0 }, { 0, -3, 0 }, { 8, -3, 0 } }, { { 4, 0, 0 } });
+}
+
+TEST_CASE("stitch: a tie on an edge that double arithmetic places differently per site pair", "[stitcher]")
+{
+  // Fields x_s at (0,0) and -2 x_s at (8,8): along the diagonal every pair of sites crosses at
+  // t = 1/3 exactly, but t = dx / (dx - dy) rounds differently for each pair, since the
+  // differences dx of values of unrelated magnitudes are rounded. The stitch must still make
+  // one vertex of it. The other two corners get arbitrary values.
+  const double x[4] = { 0.1, 1234.567, -7.3e-3, 3.0e5 / 7 };
+  const double at1[4] = { 5, -100, 40, 3 }, at3[4] = { -2, 7, 1000, -50 };
+  std::vector<std::vector<double> > field;
+  for(int s = 0; s < 4; ++s) field.push_back({ x[s], at1[s], -2 * x[s], at3[s] });
+  auto r = st_run_fields(st_square(8), field);
+  st_check(*r);
+  CHECK(st_near(*r, {{ 8. / 3, 8. / 3, 0 }}, 1e-9) == 1);
+  // three of them, with the corners swapped between the faces
+  field.pop_back();
+  std::swap(field[0][1], field[0][3]);
+  r = st_run_fields(st_square(8), field);
+  st_check(*r);
+  CHECK(st_near(*r, {{ 8. / 3, 8. / 3, 0 }}, 1e-9) == 1);
+}
+
+TEST_CASE("stitch: a Voronoi vertex exactly on a mesh vertex", "[stitcher]")
+{
+  // three sites at distance 5 from the fan's centre, and from a corner of the square
+  for(double a : st_case(st_fan(), { { 3, 4, 0 }, { -4, 3, 0 }, { 0, -5, 0 } }, { { 0, 0, 0 } })) CHECK(a > 0);
+  for(double a : st_case(st_square(8), { { 8, 5, 0 }, { 5, 4, 0 }, { 4, -3, 0 } }, { { 8, 0, 0 } })) CHECK(a > 0);
+}
+
+TEST_CASE("stitch: four cocircular sites meeting at one point", "[stitcher]")
+{
+  // inside the upper face at (2, 5), the bisectors being x = 2 and y = 5; on the diagonal at (4, 4)
+  st_expect_areas(st_case(st_square(8), { { 5, 9, 0 }, { -1, 9, 0 }, { -1, 1, 0 }, { 5, 1, 0 } }, { { 2, 5, 0 } }),
+                  { 18, 6, 10, 30 });
+  st_expect_areas(st_case(st_square(8), { { 7, 8, 0 }, { 1, 8, 0 }, { 1, 0, 0 }, { 7, 0, 0 } }, { { 4, 4, 0 } }),
+                  { 16, 16, 16, 16 });
+  // on the diagonal at (95/26, 95/26), and inside the upper face at (31/7, 40/7): not doubles
+  st_case(st_square(8), { { 8, 6, 0 }, { -1, 2, 0 }, { 2, -1, 0 }, { 6, 8, 0 } }, { { 95. / 26, 95. / 26, 0 } });
+  st_case(st_square(8), { { 5, 1, 0 }, { 1, 9, 0 }, { 0, 4, 0 }, { 9, 7, 0 } }, { { 31. / 7, 40. / 7, 0 } });
+  // at the fan's centre
+  st_case(st_fan(), { { 3, 4, 0 }, { -3, 4, 0 }, { -3, -4, 0 }, { 3, -4, 0 } }, { { 0, 0, 0 } });
+}
+
+TEST_CASE("stitch: a bisector running exactly along a mesh edge", "[stitcher]")
+{
+  // sites symmetric about the diagonal: each owns one face
+  st_expect_areas(st_case(st_square(8), { { 6, 2, 0 }, { 2, 6, 0 } }), { 32, 32 });
+  // a third site cuts the diagonal where both bisectors with it meet it, at (6.1, 6.1) and at
+  // (29/6, 29/6): the two faces name that point with different site pairs
+  std::vector<double> area = st_case(st_square(8), { { 6, 2, 0 }, { 2, 6, 0 }, { 9, 9, 0 } });
+  CHECK(area[0] == Approx(area[1]).epsilon(1e-12));
+  st_case(st_square(8), { { 6, 2, 0 }, { 2, 6, 0 }, { 7, 7, 0 } }, { { 29. / 6, 29. / 6, 0 } });
+  // along a border edge: the site below gets nothing
+  CHECK(st_case(st_square(8), { { 4, 3, 0 }, { 4, -3, 0 }, { 9, 1, 0 } })[1] == 0);
+}
+
+TEST_CASE("stitch: a lattice of sites whose bisectors run along grid lines", "[stitcher]")
+{
+  std::vector<St_point> sites;
+  for(int j = 0; j <= 6; j += 2)
+    for(int i = 0; i <= 6; i += 2) sites.push_back({{ double(i), double(j), 0 }});
+  const auto flat = [](int, int) { return 0.; };
+  const auto r = st_run(st_grid(6, flat), sites);
+  const std::vector<double> area = st_check(*r);
+  CHECK(r->part.pieces.size() == r->mesh.number_of_faces());   // every face inside one cell
+  // cells: [0, 1], [1, 3], [3, 5], [5, 6] in each direction
+  const double extent[4] = { 1, 2, 2, 1 };
+  for(std::size_t s = 0; s < sites.size(); ++s) CHECK(area[s] == Approx(extent[s % 4] * extent[s / 4]).epsilon(1e-12));
+  // shifted by half a cell: bisectors through the middle of cells, four sites meeting on
+  // cell diagonals at (1.5, 1.5), ...
+  for(St_point& s : sites) { s[0] += 0.5; s[1] += 0.5; }
+  const std::vector<double> shifted = st_case(st_grid(6, flat), sites, { { 1.5, 1.5, 0 }, { 3.5, 5.5, 0 } });
+  const double shifted_extent[4] = { 1.5, 2, 2, 0.5 };
+  for(std::size_t s = 0; s < sites.size(); ++s)
+    CHECK(shifted[s] == Approx(shifted_extent[s % 4] * shifted_extent[s / 4]).epsilon(1e-12));
+}
