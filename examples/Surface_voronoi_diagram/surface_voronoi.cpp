@@ -166,7 +166,7 @@ Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
 
 template <class Diagram>
 void report(const Arguments& args, const Diagram& vd, double load, double embedding, double output,
-            double insertion, std::size_t faces)
+            double insertion, std::size_t faces, const SV::internal::Stage_times& times)
 {
   const SV::Diagram_statistics& s = vd.statistics();
   if(s.unreached_faces > 0)
@@ -190,10 +190,10 @@ void report(const Arguments& args, const Diagram& vd, double load, double embedd
             << "load: " << load << "\n"
             << "insertion: " << insertion << "\n"
             << "embedding: " << embedding << "\n"
-            << "setup: " << s.setup_seconds << "\n"
-            << "propagation: " << s.propagation_seconds << "\n"
-            << "cutting: " << s.cutting_seconds << "\n"
-            << "repair: " << s.repair_seconds << "\n"
+            << "setup: " << times["setup"] << "\n"
+            << "propagation: " << times["propagation"] << "\n"
+            << "cutting: " << times["cutting"] << "\n"
+            << "repair: " << times["repair"] << "\n"
             << "output: " << output << std::endl;
 }
 
@@ -204,8 +204,9 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
          const std::vector<Point>& site_points)
 {
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
+  SV::internal::Stage_times times;
   CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options,
-                                                 CGAL::parameters::edge_is_constrained_map(breakline));
+                                                 SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)));
   const auto t0 = std::chrono::steady_clock::now();
   if(!args.output.empty())
   {
@@ -225,7 +226,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
                    "more sites help)" << std::endl;
   }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  report(args, vd, load, embedding, output, insertion, num_faces(mesh));
+  report(args, vd, load, embedding, output, insertion, num_faces(mesh), times);
 }
 
 int run_main(int argc, char** argv)
@@ -317,6 +318,26 @@ int run_main(int argc, char** argv)
   }
   const double load = std::chrono::duration<double>(Clock::now() - t0).count();
 
+  // The library's preconditions, checked here so that every build gives one readable line.
+  for(const SV::Input_problem& p : SV::validate_input(mesh, locations))
+  {
+    if(p.kind == SV::Input_problem::COINCIDENT_SITES && !lines.empty())
+      fail(1, "sites file lines " + std::to_string(lines[p.element]) + " and " + std::to_string(lines[p.other])
+              + ": the two sites are at the same surface point");
+    fail(1, args.mesh + ": " + p.message);
+  }
+  // the biharmonic embedding needs more vertices than eigenpairs (on the mesh it is built on)
+  auto check_dimension = [&](const Mesh& m) {
+    const std::size_t largest = CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
+    if(args.metric == "biharmonic" && args.dimension > largest)
+    {
+      const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
+      fail(1, args.mesh + ": the mesh has " + std::to_string(nv) + " vertices and " + std::to_string(components)
+              + " component(s): too few for an embedding of dimension " + std::to_string(args.dimension));
+    }
+  };
+  check_dimension(mesh);
+
   SV::Diagram_options options;
   if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
   if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
@@ -360,7 +381,6 @@ int run_main(int argc, char** argv)
 
   try
   {
-    try
     {
       const Mesh* work = &mesh;
       std::vector<Location> work_sites = locations;
@@ -418,6 +438,7 @@ int run_main(int argc, char** argv)
         carry_breaklines(inserted.mesh, inserted.input_face);
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
+      check_dimension(*work);
       const auto te = Clock::now();
       if(args.metric == "biharmonic")
       {
@@ -437,13 +458,6 @@ int run_main(int argc, char** argv)
         SV::Euclidean_embedding<Mesh> metric(*work);
         run(args, *work, metric, work_sites, options, load, 0., insertion, site_points);
       }
-    }
-    catch(const SV::Coincident_sites_error& e)
-    {
-      if(!lines.empty())
-        fail(1, "sites file lines " + std::to_string(lines[e.first]) + " and " + std::to_string(lines[e.second])
-                + ": the two sites are at the same surface point");
-      fail(1, e.what());
     }
   }
   catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }

@@ -3,7 +3,7 @@
 
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
-#include <CGAL/Surface_voronoi_diagram/internal/spectral/cotangent_laplacian.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -114,28 +114,24 @@ TEST_CASE("embedding: Surface_mesh and Polyhedron_3 give the same embedding", "[
     CHECK(ep.eigenvalues()[k] == Approx(em.eigenvalues()[k]).epsilon(1e-9));
 }
 
-TEST_CASE("embedding: clear errors on unusable input", "[embedding][errors]")
+TEST_CASE("embedding: the largest dimension a mesh allows, and the largest works", "[embedding]")
 {
   Mesh m;
-  GEN::make_icosphere(m, 0, 1.0);   // 12 vertices
-  SV::Biharmonic_options o;
-  o.dimension = 12;
-  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, o), SV::Input_error);
-  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(m, o), Catch::Contains("too few"));
-  o.dimension = 0;
-  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, o), SV::Input_error);
-  Mesh empty;
-  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(empty), Catch::Contains("empty"));
-  // a zero-area face
+  GEN::make_icosphere(m, 0, 1.0);   // 12 vertices, one component
+  CHECK(CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m) == 10);
+  const CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(10));
+  CHECK(e.dimension() == 10);
+  Mesh two = m;
+  CGAL::copy_face_graph(m, two);   // a second component: one more zero eigenvalue
+  CHECK(CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(two) == 21);
+  // unusable meshes are named by validate_input() (the preconditions are tested in test_preconditions.cpp)
   Mesh flat;
   GEN::make_icosphere(flat, 2, 1.0);
-  auto f = *faces(flat).begin();
-  auto h = halfedge(f, flat);
+  auto h = halfedge(*faces(flat).begin(), flat);
   flat.point(target(h, flat)) = flat.point(source(h, flat));
-  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(flat), Catch::Contains("zero area"));
-  // a NaN coordinate
-  Mesh nan;
-  GEN::make_icosphere(nan, 2, 1.0);
-  nan.point(*vertices(nan).begin()) = Point(std::nan(""), 0, 0);
-  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(nan), Catch::Contains("non-finite"));
+  const std::vector<Mesh::Vertex_index> site = { *vertices(flat).begin() };
+  const auto problems = SV::validate_input(flat, site);
+  REQUIRE(!problems.empty());
+  CHECK(problems.front().kind == SV::Input_problem::ZERO_AREA_FACE);
+  CHECK(problems.front().message.find("zero area") != std::string::npos);
 }

@@ -51,7 +51,7 @@ TEST_CASE("breaklines: a closed loop separates the sites inside from those outsi
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, SV::Diagram_options(),
                                                     CGAL::parameters::edge_is_constrained_map(loop));
   check_invariants(vd);
-  CHECK(vd.number_of_breakline_edges() == 40);
+  CHECK(SV::internal::Diagram_access::data(vd).breaklines.size() == 40);
   std::size_t checked = 0;
   for(const auto& l : area_uniform_locations(m, 2000, 3))
   {

@@ -5,7 +5,7 @@
 // point of the triangle lies in the piece of its lowest pair.
 #include <catch2/catch.hpp>
 
-#include <CGAL/Surface_voronoi_diagram/internal/cutting.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
 
 #include <algorithm>
 #include <array>
@@ -21,7 +21,7 @@ namespace {
 namespace SVI = CGAL::Surface_voronoi::internal;
 typedef CGAL::Exact_rational Fc_q;
 typedef std::array<Fc_q, 3> Fc_bary;   // barycentric coordinates in the face
-typedef std::vector<SVI::Face_field> Fc_list;
+typedef std::vector<SVI::Candidate> Fc_list;
 
 // The test triangle (0,0), (8,0), (0,8), counter-clockwise; fields are squared distances
 // to integer sites, so every value is an exact integer.
@@ -39,18 +39,18 @@ Fc_list fc_fields(const std::vector<std::array<double, 2> >& sites, const std::v
   return list;
 }
 
-Fc_q fc_value(const SVI::Face_field& f, const Fc_bary& b)
+Fc_q fc_value(const SVI::Candidate& f, const Fc_bary& b)
 {
   return b[0] * Fc_q(f.value[0]) + b[1] * Fc_q(f.value[1]) + b[2] * Fc_q(f.value[2]);
 }
 
 // where a symbolic vertex of the piece of candidate `owner` is, solved here from the values
-Fc_bary fc_position(const Fc_list& c, std::uint32_t owner, const SVI::Piece_vertex& v)
+Fc_bary fc_position(const Fc_list& c, std::uint32_t owner, const SVI::Symbolic_vertex& v)
 {
   Fc_bary b = {{ Fc_q(0), Fc_q(0), Fc_q(0) }};
-  if(v.kind == SVI::Piece_vertex::CORNER) b[v.local] = 1;
-  if(v.kind == SVI::Piece_vertex::CORNER) return b;
-  if(v.kind == SVI::Piece_vertex::EDGE)
+  if(v.kind == SVI::Symbolic_vertex::CORNER) b[v.local] = 1;
+  if(v.kind == SVI::Symbolic_vertex::CORNER) return b;
+  if(v.kind == SVI::Symbolic_vertex::EDGE)
   {
     // (1-t) h(k0) + t h(k1) = 0 with h = D_owner - D_other
     const int k0 = v.local, k1 = (v.local + 1) % 3;
@@ -103,19 +103,19 @@ std::vector<Fc_piece> fc_check(const Fc_list& c, const SVI::Face_cut& cut, unsig
 {
   std::mt19937 rng(seed);
   std::ostringstream fields;
-  for(const SVI::Face_field& f : c) fields << "site " << f.site << ": " << f.value[0] << " " << f.value[1] << " " << f.value[2] << "; ";
+  for(const SVI::Candidate& f : c) fields << "site " << f.site << ": " << f.value[0] << " " << f.value[1] << " " << f.value[2] << "; ";
   INFO("candidates " << fields.str());
   std::vector<Fc_piece> pieces;
   std::vector<int> seen(c.size(), 0);
   Fc_q total = 0;
-  for(const SVI::Raw_piece& rp : cut.pieces)
+  for(const SVI::Symbolic_piece& rp : cut.pieces)
   {
     REQUIRE(rp.candidate < c.size());
     CHECK(++seen[rp.candidate] == 1);
     REQUIRE(rp.vertices.size() >= 3);
     REQUIRE(rp.supports.size() == rp.vertices.size());
     Fc_piece p{ rp.candidate, {}, 0 };
-    for(const SVI::Piece_vertex& v : rp.vertices) p.points.push_back(fc_position(c, rp.candidate, v));
+    for(const SVI::Symbolic_vertex& v : rp.vertices) p.points.push_back(fc_position(c, rp.candidate, v));
     const std::size_t n = p.points.size();
     for(std::size_t k = 0; k < n; ++k)
     {
@@ -185,11 +185,11 @@ bool fc_has_point(const Fc_piece& p, const Fc_bary& x)
   return false;
 }
 
-std::multiset<int> fc_kinds(const SVI::Raw_piece& p)
+std::multiset<int> fc_kinds(const SVI::Symbolic_piece& p)
 {
   std::multiset<int> kinds;
-  for(const SVI::Piece_vertex& v : p.vertices)
-    kinds.insert(100 * v.kind + 10 * v.local + (v.kind == SVI::Piece_vertex::CORNER ? 0 : int(v.other)));
+  for(const SVI::Symbolic_vertex& v : p.vertices)
+    kinds.insert(100 * v.kind + 10 * v.local + (v.kind == SVI::Symbolic_vertex::CORNER ? 0 : int(v.other)));
   return kinds;
 }
 
@@ -233,8 +233,8 @@ TEST_CASE("Face_cutter: a bisector crossing two edges", "[face_cutter]")
   CHECK_FALSE(cut.degenerate);
   const std::vector<Fc_piece> pieces = fc_check(c, cut);
   REQUIRE(pieces.size() == 2);
-  const SVI::Raw_piece& p0 = cut.pieces[0].candidate == 0 ? cut.pieces[0] : cut.pieces[1];
-  const SVI::Raw_piece& p1 = cut.pieces[0].candidate == 0 ? cut.pieces[1] : cut.pieces[0];
+  const SVI::Symbolic_piece& p0 = cut.pieces[0].candidate == 0 ? cut.pieces[0] : cut.pieces[1];
+  const SVI::Symbolic_piece& p1 = cut.pieces[0].candidate == 0 ? cut.pieces[1] : cut.pieces[0];
   // vertex kinds, coded 100 kind + 10 local + other: corner 0 and the crossings of edges 0, 2
   CHECK(fc_kinds(p0) == std::multiset<int>{ 0, 101, 121 });
   CHECK(fc_kinds(p1) == std::multiset<int>{ 10, 20, 100, 120 });
@@ -242,7 +242,7 @@ TEST_CASE("Face_cutter: a bisector crossing two edges", "[face_cutter]")
   std::vector<std::pair<Fc_bary, Fc_bary> > bisector_edges[2];
   for(int side = 0; side < 2; ++side)
   {
-    const SVI::Raw_piece& rp = side == 0 ? p0 : p1;
+    const SVI::Symbolic_piece& rp = side == 0 ? p0 : p1;
     const Fc_piece& fp = *fc_piece_of(pieces, rp.candidate);
     for(std::size_t k = 0; k < rp.vertices.size(); ++k)
       if(!rp.supports[k].on_mesh_edge)
@@ -266,7 +266,7 @@ TEST_CASE("Face_cutter: three candidates meet at a triple point inside", "[face_
   const Fc_list c = fc_fields({ { { 6, 5 } }, { { -1, 6 } }, { { 2, -3 } } });
   const SVI::Face_cut cut = SVI::Face_cutter(c).cut();
   fc_expect(c, cut, 3, false, fc_at(2, 2));
-  for(const SVI::Raw_piece& rp : cut.pieces)
+  for(const SVI::Symbolic_piece& rp : cut.pieces)
   {
     const std::multiset<int> kinds = fc_kinds(rp);
     CHECK(std::count_if(kinds.begin(), kinds.end(), [](int k) { return k >= 200; }) == 1);   // one TRIPLE

@@ -6,7 +6,9 @@
 // the values from the order of the queries, and a second component that nothing reaches.
 #include <catch2/catch.hpp>
 
-#include <CGAL/Surface_voronoi_diagram/internal/geodesic/Local_fast_marching.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Fast_marching/Local_fast_marching.h>
 
 #include <algorithm>
 #include <array>
@@ -14,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <utility>
 #include <vector>
@@ -24,6 +27,7 @@ namespace SVI = CGAL::Surface_voronoi::internal;
 typedef std::array<double, 2> Fm_2;
 const double fm_inf = std::numeric_limits<double>::infinity();
 
+SVI::Point_2d fm_point(const Fm_2& p) { return SVI::Point_2d(p[0], p[1]); }
 double fm_dist(const Fm_2& p, const Fm_2& q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
 
 // The closed form: a source s on the other side of line ab than c reaches c straight if the
@@ -41,38 +45,55 @@ bool fm_close(double got, double expected, double rel)
   return std::abs(got - expected) <= rel * std::abs(expected);
 }
 
-// A flat triangle mesh for fast marching, with the neighbours found here from the corners.
+// A flat triangle mesh for fast marching: points and corners as the test writes them, made
+// into a Surface_mesh (vertices and faces keep their order) and its indexed copy.
+typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Fm_surface;
 struct Fm_mesh
 {
-  std::vector<SVI::Vector_3d> points;
+  std::vector<std::array<double, 3> > points;
   std::vector<std::array<std::uint32_t, 3> > triangles;
-  SVI::Fast_marching_mesh marching;
+  Fm_surface surface;
+  std::unique_ptr<SVI::Indexed_mesh<Fm_surface> > indexed;
+  std::unique_ptr<SVI::Fast_marching_mesh<Fm_surface> > marching;
 
   void add(double x, double y) { points.push_back({{ x, y, 0. }}); }
   void face(std::uint32_t a, std::uint32_t b, std::uint32_t c) { triangles.push_back({{ a, b, c }}); }
   void build()
   {
-    const std::size_t none = std::size_t(-1);
-    std::vector<std::array<std::size_t, 3> > neighbors(triangles.size(), {{ none, none, none }});
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> directed;   // (u, w) -> face
-    for(std::size_t f = 0; f < triangles.size(); ++f)
-      for(int k = 0; k < 3; ++k) directed[{ triangles[f][k], triangles[f][(k + 1) % 3] }] = f;
-    for(std::size_t f = 0; f < triangles.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-      {
-        auto it = directed.find({ triangles[f][(k + 1) % 3], triangles[f][k] });
-        if(it != directed.end()) neighbors[f][k] = it->second;
-      }
-    marching.build(points, triangles, neighbors, none);
+    std::vector<Fm_surface::Vertex_index> v;
+    for(const auto& p : points) v.push_back(surface.add_vertex(CGAL::Epick::Point_3(p[0], p[1], p[2])));
+    for(const auto& t : triangles) REQUIRE(surface.add_face(v[t[0]], v[t[1]], v[t[2]]) != Fm_surface::null_face());
+    indexed.reset(new SVI::Indexed_mesh<Fm_surface>(surface, get(CGAL::vertex_point, surface)));
+    marching.reset(new SVI::Fast_marching_mesh<Fm_surface>(*indexed));
   }
-  SVI::Vector_3d seed_point(const SVI::Marching_seed& s) const
+  // seeds written in the test's corner order, in the indexed mesh's (which may start at
+  // another corner of the face)
+  std::vector<SVI::Marching_seed> in_indexed_order(std::vector<SVI::Marching_seed> seeds) const
   {
-    SVI::Vector_3d p = {{ 0., 0., 0. }};
+    for(SVI::Marching_seed& s : seeds)
+    {
+      std::array<double, 3> b = s.barycentric;
+      for(int k = 0; k < 3; ++k)
+        for(int j = 0; j < 3; ++j)
+          if(indexed->triangles[s.face][k] == triangles[s.face][j]) b[k] = s.barycentric[j];
+      s.barycentric = b;
+    }
+    return seeds;
+  }
+  // the seed's point (test's corner order)
+  std::array<double, 3> seed_point(const SVI::Marching_seed& s) const
+  {
+    std::array<double, 3> p = {{ 0., 0., 0. }};
     for(int k = 0; k < 3; ++k)
       for(int c = 0; c < 3; ++c) p[c] += s.barycentric[k] * points[triangles[s.face][k]][c];
     return p;
   }
 };
+
+double fm_length(const std::array<double, 3>& p, const std::array<double, 3>& q)
+{
+  return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+}
 
 // (n+1)^2 vertices on [0,1]^2 with inner vertices moved by up to `jitter` cells, cells split
 // along alternating diagonals
@@ -123,8 +144,8 @@ TEST_CASE("point source update: a source unfolded in the plane", "[fast_marching
     const Fm_2 ma = move(a), mb = move(b), mc = move(c);
     const double results[5] = {
       SVI::point_source_in_frame(ab, c[0], c[1], da, db),
-      SVI::point_source_update(ma, mb, mc, da, db),
-      SVI::point_source_update(mb, ma, mc, db, da),                                  // a <-> b
+      SVI::point_source_update(fm_point(ma), fm_point(mb), fm_point(mc), da, db),
+      SVI::point_source_update(fm_point(mb), fm_point(ma), fm_point(mc), db, da),                                  // a <-> b
       SVI::point_source_update(fm_dist(a, b), fm_dist(a, c), fm_dist(b, c), da, db),  // side lengths
       SVI::point_source_update(fm_dist(a, b), fm_dist(b, c), fm_dist(a, c), db, da)
     };
@@ -144,12 +165,12 @@ TEST_CASE("point source update: no source, or a degenerate triangle", "[fast_mar
   // da + db < ab and |da - db| > ab: no point is at those distances from a and b
   CHECK(SVI::point_source_in_frame(2., 1., 1., 0.9, 0.9) == fm_inf);
   CHECK(SVI::point_source_in_frame(1., 0.5, 1., 3., 1.5) == fm_inf);
-  CHECK(SVI::point_source_update({{ 0., 0. }}, {{ 2., 0. }}, {{ 1., 1. }}, 0.9, 0.9) == fm_inf);
+  CHECK(SVI::point_source_update(SVI::Point_2d(0., 0.), SVI::Point_2d(2., 0.), SVI::Point_2d(1., 1.), 0.9, 0.9) == fm_inf);
   CHECK(SVI::point_source_update(2., std::sqrt(2.), std::sqrt(2.), 0.9, 0.9) == fm_inf);
   // a = b, or c on line ab
   CHECK(SVI::point_source_in_frame(0., 1., 1., 1., 1.) == fm_inf);
   CHECK(SVI::point_source_in_frame(1., 0.5, 0., 1., 1.) == fm_inf);
-  CHECK(SVI::point_source_update({{ 1., 1. }}, {{ 1., 1. }}, {{ 0., 3. }}, 1., 1.) == fm_inf);
+  CHECK(SVI::point_source_update(SVI::Point_2d(1., 1.), SVI::Point_2d(1., 1.), SVI::Point_2d(0., 3.), 1., 1.) == fm_inf);
   CHECK(SVI::point_source_update(0., 1., 1., 1., 1.) == fm_inf);
   // the source on the line through a and b, between them: the distance from c is exact
   CHECK(SVI::point_source_in_frame(2., 1., 1., 1., 1.) == Approx(1.).epsilon(1e-12));
@@ -162,26 +183,26 @@ TEST_CASE("Local_fast_marching: flat jittered grid against Euclidean distances",
   Fm_mesh m;
   fm_grid(m, 24, 0.3, 5);
   m.build();
-  SVI::Local_fast_marching lfm(m.marching);
+  SVI::Local_fast_marching<Fm_surface> lfm(*m.marching);
   std::vector<SVI::Marching_seed> seeds(2);
   seeds[0].face = 2 * (24 * 11 + 12);
   seeds[0].barycentric = {{ 0.2, 0.3, 0.5 }};
   seeds[1].face = 7;
   seeds[1].barycentric = {{ 0.6, 0.3, 0.1 }};
-  lfm.set_seeds(seeds);
+  lfm.set_seeds(m.in_indexed_order(seeds));
   for(std::size_t i = 0; i < seeds.size(); ++i)
   {
-    const SVI::Vector_3d p = m.seed_point(seeds[i]);
+    const std::array<double, 3> p = m.seed_point(seeds[i]);
     for(std::uint32_t v = 0; v < m.points.size(); ++v)
     {
-      const double e = SVI::length(SVI::difference(m.points[v], p));
+      const double e = fm_length(m.points[v], p);
       const double d = lfm.distance(i, v);
       INFO("site " << i << " vertex " << v << " euclidean " << e);
       CHECK(std::abs(d - e) <= (std::max)(0.02 * e, 3e-3));
     }
     // the corners of the seed's face are straight
     for(std::uint32_t v : m.triangles[seeds[i].face])
-      CHECK(lfm.distance(i, v) == Approx(SVI::length(SVI::difference(m.points[v], p))).epsilon(1e-14));
+      CHECK(lfm.distance(i, v) == Approx(fm_length(m.points[v], p)).epsilon(1e-14));
   }
 }
 
@@ -210,15 +231,15 @@ TEST_CASE("Local_fast_marching: the split of obtuse corners gives straight dista
     if(i + 1 < n) m.face(T(i + 1), A(i + 1), A(i));
   }
   m.build();
-  SVI::Local_fast_marching lfm(m.marching);
+  SVI::Local_fast_marching<Fm_surface> lfm(*m.marching);
   std::vector<SVI::Marching_seed> seeds(1);
   seeds[0].face = 0;
   seeds[0].barycentric = {{ 1., 0., 0. }};   // at O
-  lfm.set_seeds(seeds);
+  lfm.set_seeds(m.in_indexed_order(seeds));
   // the domain is star-shaped from O: every distance is straight
   for(std::uint32_t v = 0; v < m.points.size(); ++v)
   {
-    const double e = SVI::length(SVI::difference(m.points[v], m.points[0]));
+    const double e = fm_length(m.points[v], m.points[0]);
     INFO("vertex " << v << " euclidean " << e);
     CHECK(std::abs(lfm.distance(0, v) - e) <= 1e-12 * e);
   }
@@ -237,9 +258,9 @@ TEST_CASE("Local_fast_marching: values do not depend on the order of the queries
     seeds[i].barycentric = {{ 0.25, 0.25, 0.5 }};
   }
   const std::uint32_t nv = std::uint32_t(m.points.size());
-  SVI::Local_fast_marching forward(m.marching), backward(m.marching);
-  forward.set_seeds(seeds);
-  backward.set_seeds(seeds);
+  SVI::Local_fast_marching<Fm_surface> forward(*m.marching), backward(*m.marching);
+  forward.set_seeds(m.in_indexed_order(seeds));
+  backward.set_seeds(m.in_indexed_order(seeds));
   std::vector<std::vector<double> > first(3, std::vector<double>(nv)), second(3, std::vector<double>(nv));
   for(std::size_t i = 0; i < 3; ++i)
     for(std::uint32_t v = 0; v < nv; ++v) first[i][v] = forward.distance(i, v);
@@ -265,13 +286,13 @@ TEST_CASE("Local_fast_marching: a second component is unreachable", "[fast_march
   const std::uint32_t first_count = std::uint32_t(m.points.size());
   fm_grid(m, 4, 0.2, 10, 3.0);   // a separate grid on [3, 4] x [0, 1]
   m.build();
-  SVI::Local_fast_marching lfm(m.marching);
+  SVI::Local_fast_marching<Fm_surface> lfm(*m.marching);
   std::vector<SVI::Marching_seed> seeds(2);
   seeds[0].face = 3;
   seeds[0].barycentric = {{ 0.3, 0.3, 0.4 }};
   seeds[1].face = std::uint32_t(m.triangles.size() - 1);   // on the second grid
   seeds[1].barycentric = {{ 0.3, 0.3, 0.4 }};
-  lfm.set_seeds(seeds);
+  lfm.set_seeds(m.in_indexed_order(seeds));
   for(std::uint32_t v = first_count; v < m.points.size(); ++v) CHECK(lfm.distance(0, v) == fm_inf);
   for(std::uint32_t v = 0; v < first_count; ++v)
   {
@@ -280,5 +301,5 @@ TEST_CASE("Local_fast_marching: a second component is unreachable", "[fast_march
   }
   // the front is exhausted now; asking again gives the same answers
   CHECK(lfm.distance(0, first_count) == fm_inf);
-  CHECK(lfm.distance(0, 0) == Approx(SVI::length(SVI::difference(m.points[0], m.seed_point(seeds[0])))).epsilon(0.03));
+  CHECK(lfm.distance(0, 0) == Approx(fm_length(m.points[0], m.seed_point(seeds[0]))).epsilon(0.03));
 }

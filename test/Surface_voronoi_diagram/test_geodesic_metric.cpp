@@ -23,7 +23,7 @@ namespace {
 void distance_errors(const Mesh& m, const Location<Mesh>& site, double near, double& max_error, double& mean_error)
 {
   Geodesic g(m);
-  g.set_sites(m, { site });
+  g.set_sites({ site });
   std::vector<Location<Mesh> > targets;
   std::vector<Mesh::Vertex_index> vs;
   for(auto v : vertices(m))
@@ -149,8 +149,8 @@ TEST_CASE("geodesic metric: deterministic, and independent of the order of queri
 
   // a front advanced in one go or in small steps gives the same values, bit for bit
   Geodesic eager(m), lazy(m);
-  eager.set_sites(m, sites);
-  lazy.set_sites(m, sites);
+  eager.set_sites(sites);
+  lazy.set_sites(sites);
   std::vector<Mesh::Vertex_index> vs(vertices(m).begin(), vertices(m).end());
   std::vector<double> far(sites.size());
   for(std::size_t i = 0; i < sites.size(); ++i)
@@ -167,7 +167,9 @@ TEST_CASE("geodesic metric: clear errors", "[geodesic][errors]")
   Mesh m;
   GEN::make_icosphere(m, 2, 1.0);
   Geodesic g(m);
-  CHECK_THROWS_AS(g.squared_distance(0, *vertices(m).begin()), SV::Input_error);
-  Mesh empty;
-  CHECK_THROWS_AS(Geodesic(empty), SV::Input_error);
+  // asked before any site is set (a failed precondition in a debug build)
+  CHECK_THROWS(g.squared_distance(0, *vertices(m).begin()));
+  g.set_sites(area_uniform_locations(m, 3, 1));
+  CHECK_NOTHROW(g.squared_distance(2, *vertices(m).begin()));
+  CHECK_THROWS_AS(g.squared_distance(3, *vertices(m).begin()), SV::Input_error);   // not a site index
 }

@@ -24,11 +24,11 @@ TEST_CASE("power: all-zero weights give exactly the plain diagram", "[power]")
   SV::Diagram_options zero;
   zero.weights.assign(sites.size(), 0.);
   CGAL::Surface_voronoi_diagram<Mesh> plain(m, e, sites), weighted(m, e, sites, zero);
-  REQUIRE(plain.partition().pieces.size() == weighted.partition().pieces.size());
-  for(std::size_t p = 0; p < plain.partition().pieces.size(); ++p)
+  REQUIRE(SV::internal::Diagram_access::data(plain).partition.pieces.size() == SV::internal::Diagram_access::data(weighted).partition.pieces.size());
+  for(std::size_t p = 0; p < SV::internal::Diagram_access::data(plain).partition.pieces.size(); ++p)
   {
-    CHECK(plain.partition().pieces[p].site == weighted.partition().pieces[p].site);
-    CHECK(plain.partition().pieces[p].vertices == weighted.partition().pieces[p].vertices);
+    CHECK(SV::internal::Diagram_access::data(plain).partition.pieces[p].site == SV::internal::Diagram_access::data(weighted).partition.pieces[p].site);
+    CHECK(SV::internal::Diagram_access::data(plain).partition.pieces[p].vertices == SV::internal::Diagram_access::data(weighted).partition.pieces[p].vertices);
   }
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(plain.cell_area(i) == weighted.cell_area(i));
@@ -84,11 +84,11 @@ namespace {
 template <class Diagram>
 void require_same_partition(const Diagram& a, const Diagram& b)
 {
-  REQUIRE(a.partition().pieces.size() == b.partition().pieces.size());
-  for(std::size_t p = 0; p < a.partition().pieces.size(); ++p)
+  REQUIRE(SV::internal::Diagram_access::data(a).partition.pieces.size() == SV::internal::Diagram_access::data(b).partition.pieces.size());
+  for(std::size_t p = 0; p < SV::internal::Diagram_access::data(a).partition.pieces.size(); ++p)
   {
-    CHECK(a.partition().pieces[p].site == b.partition().pieces[p].site);
-    CHECK(a.partition().pieces[p].vertices == b.partition().pieces[p].vertices);
+    CHECK(SV::internal::Diagram_access::data(a).partition.pieces[p].site == SV::internal::Diagram_access::data(b).partition.pieces[p].site);
+    CHECK(SV::internal::Diagram_access::data(a).partition.pieces[p].vertices == SV::internal::Diagram_access::data(b).partition.pieces[p].vertices);
   }
   for(std::size_t i = 0; i < a.number_of_sites(); ++i)
   {
@@ -153,7 +153,7 @@ TEST_CASE("power: a weight map on point sites, with the RVD baseline", "[power]"
   CHECK(from_map.site_weight(4) == 0.3);
 }
 
-TEST_CASE("power: bad weights from a map are Input_errors", "[power]")
+TEST_CASE("power: bad weights are named by validate_input", "[power]")
 {
   Mesh m;
   GEN::make_icosphere(m, 2, 1.0);
@@ -165,19 +165,18 @@ TEST_CASE("power: bad weights from a map are Input_errors", "[power]")
                      -std::numeric_limits<double>::infinity() })
   {
     w[Mesh::Vertex_index(10)] = bad;
-    CHECK_THROWS_WITH(Diagram(m, e, sites, SV::Diagram_options(), SV::parameters::site_weight_map(w)),
-                      "the weight of site 1 (from site_weight_map) is not finite");
+    const auto problems = SV::validate_input(m, sites, SV::parameters::site_weight_map(w));
+    REQUIRE(problems.size() == 1);
+    CHECK(problems[0].kind == SV::Input_problem::NON_FINITE_WEIGHT);
+    CHECK(problems[0].element == 1);
+    CHECK(problems[0].message == "the weight of site 1 is not finite");
   }
   w[Mesh::Vertex_index(10)] = 0.5;
-  SV::Diagram_options two;
-  two.weights = { 0., 0.5 };
-  CHECK_THROWS_AS(Diagram(m, e, sites, two, SV::parameters::site_weight_map(w)), SV::Input_error);
-  CHECK_THROWS_WITH(Diagram(m, e, sites, two, SV::parameters::site_weight_map(w)),
-                    Catch::Contains("has 2 weights") && Catch::Contains("3 sites"));
-  SV::Diagram_options different;
-  different.weights = { 0., 0.25, 0. };
-  CHECK_THROWS_WITH(Diagram(m, e, sites, different, SV::parameters::site_weight_map(w)),
-                    Catch::Contains("site 1 has two different weights"));
-  different.weights[1] = 0.5;
-  CHECK_NOTHROW(Diagram(m, e, sites, different, SV::parameters::site_weight_map(w)));
+  CHECK(SV::validate_input(m, sites, SV::parameters::site_weight_map(w)).empty());
+  // a map by site index gives the same diagram as the map by vertex
+  const std::vector<double> by_index = { 0., 0.5, 0. };
+  Diagram a(m, e, sites, SV::parameters::site_weight_map(w));
+  Diagram b(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(by_index)));
+  require_same_partition(a, b);
+  CHECK(b.site_weight(1) == 0.5);
 }

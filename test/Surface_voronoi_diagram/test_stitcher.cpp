@@ -6,7 +6,7 @@
 // cases put Voronoi vertices exactly on mesh edges and vertices and bisectors along edges.
 #include <catch2/catch.hpp>
 
-#include <CGAL/Surface_voronoi_diagram/internal/stitching.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -72,7 +72,7 @@ struct St_run
   St_mesh surface;
   St_indexed mesh;
   std::vector<std::vector<double> > field;   // field[site][vertex]
-  std::vector<std::vector<SVI::Face_field> > candidates;
+  std::vector<std::vector<SVI::Candidate> > candidates;
   std::vector<SVI::Face_cut> cuts;
   SVI::Partition part;
 };
@@ -149,13 +149,13 @@ std::size_t st_near(const St_run& r, const St_point& x, double tol)
   for(const SVI::Partition::Piece& p : r.part.pieces)
     for(std::size_t id : p.vertices)
     {
-      const St_point& q = r.part.vertices[id].point;
+      const SVI::Point_d& q = r.part.vertices[id].point;
       if(std::abs(q[0] - x[0]) + std::abs(q[1] - x[1]) + std::abs(q[2] - x[2]) <= tol) ids.insert(id);
     }
   return ids.size();
 }
 
-St_vector st_vec(const St_point& p) { return St_vector(p[0], p[1], p[2]); }
+St_vector st_vec(const SVI::Point_d& p) { return St_vector(p[0], p[1], p[2]); }
 
 // Every invariant of a partition; returns the area owned by each site.
 std::vector<double> st_check(const St_run& r)
@@ -225,7 +225,7 @@ std::vector<double> st_check(const St_run& r)
   {
     const SVI::Partition::Vertex& v = part.vertices[id];
     if(v.kind == SVI::Partition::AT_CORNER) CHECK(v.point == r.mesh.points[v.element]);
-    CHECK(st_near(r, v.point, 1e-9) == 1);
+    CHECK(st_near(r, St_point{{ v.point.x(), v.point.y(), v.point.z() }}, 1e-9) == 1);
   }
   // the crossings on each mesh edge: one vertex each
   for(std::size_t e = 0; e < r.mesh.number_of_edges(); ++e)

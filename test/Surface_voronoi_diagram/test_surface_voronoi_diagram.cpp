@@ -39,9 +39,9 @@ template <class Diagram>
 std::vector<double> fingerprint(const Diagram& vd)
 {
   std::vector<double> f;
-  for(const auto& v : vd.partition().vertices)
-    f.insert(f.end(), v.point.begin(), v.point.end());
-  for(const auto& p : vd.partition().pieces)
+  for(const auto& v : SV::internal::Diagram_access::data(vd).partition.vertices)
+    f.insert(f.end(), { v.point.x(), v.point.y(), v.point.z() });
+  for(const auto& p : SV::internal::Diagram_access::data(vd).partition.pieces)
   {
     f.push_back(double(p.face));
     f.push_back(double(p.site));
@@ -260,28 +260,28 @@ TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
   GEN::make_icosphere(m, 2, 1.0);
   Euclidean e(m);
   const std::vector<Location<Mesh> > none;
-  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, none)), Catch::Contains("no sites"));
+  auto problems = SV::validate_input(m, none);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].kind == SV::Input_problem::NO_SITES);
 
   auto two = area_uniform_locations(m, 5, 1);
   two.push_back(two[2]);
-  try
-  {
-    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, two);
-    FAIL("coincident sites accepted");
-  }
-  catch(const SV::Coincident_sites_error& x)
-  {
-    CHECK(x.first == 2);
-    CHECK(x.second == 5);
-    CHECK(std::string(x.what()).find("sites 2 and 5") != std::string::npos);
-  }
+  problems = SV::validate_input(m, two);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].kind == SV::Input_problem::COINCIDENT_SITES);
+  CHECK(problems[0].element == 2);
+  CHECK(problems[0].other == 5);
+  CHECK(problems[0].message.find("sites 2 and 5") != std::string::npos);
+  CHECK(SV::validate_input(m, two, SV::parameters::coincident_sites(SV::Coincident_sites::MERGE)).empty());
 
   std::vector<Point> far = { Point(0, 0, 1), Point(0, 0, 3) };
-  SV::Diagram_options o;
-  o.max_site_distance = 0.5;
+  problems = SV::validate_input(m, far, SV::parameters::max_site_distance(0.5));
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].kind == SV::Input_problem::SITE_TOO_FAR);
+  CHECK(problems[0].element == 1);
   try
   {
-    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, far, o);
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, far, SV::parameters::max_site_distance(0.5));
     FAIL("far site accepted");
   }
   catch(const SV::Site_too_far_error& x)
@@ -293,10 +293,18 @@ TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
   std::vector<Point> nan = { Point(std::nan(""), 0, 0) };
   CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, nan)), Catch::Contains("non-finite"));
 
-  o = SV::Diagram_options();
-  o.weights = { 1.0 };
-  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, area_uniform_locations(m, 3, 1), o)),
-                    Catch::Contains("weights"));
+  problems = SV::validate_input(m, nan);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].kind == SV::Input_problem::SITE_NOT_ON_MESH);
+
+  // a descriptor that is not one of the mesh's: an Input_error in every build
+  const std::vector<Mesh::Vertex_index> foreign = { Mesh::Vertex_index(1000000) };
+  CHECK_THROWS_AS((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, foreign)), SV::Input_error);
+  // a metric built on another mesh
+  Mesh other = m;
+  Euclidean e_other(other);
+  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e_other, area_uniform_locations(m, 3, 1))),
+                    Catch::Contains("another mesh"));
 
   // a non-manifold vertex: two triangles sharing only a vertex (a bowtie)
   Mesh bowtie;
@@ -307,5 +315,8 @@ TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
   REQUIRE(num_faces(bowtie) == 2);
   Euclidean eb(bowtie);
   std::vector<Mesh::Vertex_index> one = { v1 };
-  CHECK_THROWS_WITH((CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(bowtie, eb, one)), Catch::Contains("vertex 0 is non-manifold"));
+  problems = SV::validate_input(bowtie, one);
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].kind == SV::Input_problem::NON_MANIFOLD_VERTEX);
+  CHECK(problems[0].message.find("vertex 0 is non-manifold") != std::string::npos);
 }

@@ -1,11 +1,22 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// The identity embedding (x, y, z): with propagation it is SurfaceVoronoi's EDBVD baseline,
-// with every site in every face the classic restricted Voronoi diagram (RVD).
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The identity embedding (x, y, z): with propagation it is SurfaceVoronoi's EDBVD baseline
+// (\cgalCite{cgal:xwz-svdm-22}), with every site in every face the classic restricted
+// Voronoi diagram (RVD).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_EUCLIDEAN_EMBEDDING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_EUCLIDEAN_EMBEDDING_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 
@@ -18,42 +29,59 @@ namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
-/// The Euclidean embedding: every vertex is embedded at its own position.
+/// The Euclidean embedding: every vertex is embedded at its own position, so squared
+/// distances, and power weights, are squared lengths.
 /// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam VertexPointMap a readable property map from vertices to 3D points
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points; default:
+///         the mesh's internal `CGAL::vertex_point` map
 /// \cgalModels `SurfaceVoronoiEmbedding`
 template <class TriangleMesh, class VertexPointMap = Default>
 class Euclidean_embedding
 {
 public:
+  /// the mesh type
   typedef TriangleMesh Triangle_mesh;
+  /// `Embedding_tag`
   typedef Embedding_tag Metric_category;
+  /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// the vertex point map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
 
+  /// the embedding of `tm`; named parameter: `vertex_point_map` (default: the mesh's
+  /// internal point map). `tm` must stay alive while the embedding is used.
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Euclidean_embedding(const TriangleMesh& tm,
                                const NamedParameters& np = CGAL::parameters::default_values())
-    : m_vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+    : m_tm(&tm),
+      m_vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                get_const_property_map(CGAL::vertex_point, tm)))
   {}
 
+  /// the mesh the embedding belongs to
+  const Triangle_mesh& triangle_mesh() const { return *m_tm; }
+
+  /// 3
   std::size_t dimension() const { return 3; }
 
-  void coordinates(vertex_descriptor v, double* out) const
+  /// writes the three coordinates of `v` to `out`
+  template <class OutputIterator>
+  OutputIterator coordinates(vertex_descriptor v, OutputIterator out) const
   {
     const auto& p = get(m_vpm, v);
-    out[0] = CGAL::to_double(p.x());
-    out[1] = CGAL::to_double(p.y());
-    out[2] = CGAL::to_double(p.z());
+    *out++ = CGAL::to_double(p.x());
+    *out++ = CGAL::to_double(p.y());
+    *out++ = CGAL::to_double(p.z());
+    return out;
   }
 
 private:
+  const TriangleMesh* m_tm;
   Vertex_point_map m_vpm;
 };
 
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_EUCLIDEAN_EMBEDDING_H

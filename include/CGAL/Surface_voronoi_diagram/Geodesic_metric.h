@@ -1,22 +1,36 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Geodesic distances along the surface, computed per site only where the site propagates.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_GEODESIC_METRIC_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_GEODESIC_METRIC_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/internal/geodesic/Local_fast_marching.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Fast_marching/Local_fast_marching.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,7 +41,7 @@ namespace Surface_voronoi {
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// Geodesic distances along the surface: the metric whose Voronoi cells are the geodesic
 /// Voronoi cells, up to the accuracy of fast marching and to the linear interpolation of
-/// squared distances inside a face.
+/// squared distances inside a face. Squared distances, and power weights, are squared lengths.
 ///
 /// Each site's distances are computed by its own fast-marching front, advanced only as far
 /// as the diagram asks, that is over the faces where the site can still win and one ring
@@ -35,101 +49,147 @@ namespace Surface_voronoi {
 /// mesh size times the number of sites, and there is no precomputation. The triangle update
 /// treats the front as a point source unfolded into the triangle's plane, so distances are
 /// exact on developable patches in direct sight of the site; obtuse corners are split by an
-/// unfolded neighbour vertex.
-///
-/// Walls are respected because distances are measured along the surface: two sides of a thin
-/// shell are as far apart as the path around the rim.
+/// unfolded neighbour vertex. Walls are respected because distances are measured along the
+/// surface: two sides of a thin shell are as far apart as the path around the rim.
 ///
 /// Accuracy depends on the resolution: with fewer than about 10 vertices per site the cells
-/// become coarse (see `refine_for_sites()` in the manual's section on coarse meshes).
+/// become coarse (see `refine_for_sites()`).
+///
+/// <b>One diagram at a time.</b> The fronts are state: `set_sites()` starts them afresh.
+/// A diagram built with the metric calls `set_sites()` in its constructor, asks distances
+/// while it is constructed, and never uses the metric afterwards, so the metric may then be
+/// queried (`distance()`), destroyed, or given to another diagram (which starts it afresh).
+/// Copies share no state: a copy marches its own fronts.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam VertexPointMap a readable property map from vertices to 3D points
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points; default:
+///         the mesh's internal `CGAL::vertex_point` map
 ///
-/// \cgalModels `SurfaceVoronoiMetric`
+/// \cgalModels `SurfaceVoronoiLazyMetric`
 template <class TriangleMesh, class VertexPointMap = Default>
 class Geodesic_metric
 {
+  typedef internal::Indexed_mesh<TriangleMesh> Indexed;
+  typedef internal::Fast_marching_mesh<TriangleMesh> Marching_mesh;
+  typedef internal::Local_fast_marching<TriangleMesh> Marching;
+
 public:
+  /// the mesh type
   typedef TriangleMesh Triangle_mesh;
+  /// `Lazy_metric_tag`
   typedef Lazy_metric_tag Metric_category;
+  /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// the vertex point map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  /// a point in a face: the face and barycentric coordinates
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
-  /// Reads the mesh. Named parameter: `vertex_point_map`.
-  /// \throws Input_error if the mesh is empty, not triangulated, or has a degenerate face
+  /// Reads the mesh (it must stay alive while the metric is used). Named parameter:
+  /// `vertex_point_map` (default: the mesh's internal point map).
+  /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than 2^32 - 1 vertices
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Geodesic_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
-    : m_state(std::make_shared<State>())
   {
+    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
-    m_state->mesh.build(tm, vpm);
-    const internal::Indexed_mesh<TriangleMesh>& im = m_state->mesh;
-    if(im.number_of_vertices() >= std::size_t(std::uint32_t(-1)))
-      throw Input_error("the mesh has too many vertices for the geodesic metric");
-    std::vector<std::array<std::uint32_t, 3> > triangles(im.number_of_faces());
-    for(std::size_t f = 0; f < triangles.size(); ++f)
-      for(int k = 0; k < 3; ++k) triangles[f][k] = static_cast<std::uint32_t>(im.triangles[f][k]);
-    m_state->marching_mesh.build(im.points, triangles, im.neighbors, internal::Indexed_mesh<TriangleMesh>::none);
+    CGAL_precondition_msg(num_vertices(tm) < std::size_t(std::uint32_t(-1)) && num_faces(tm) < std::size_t(std::uint32_t(-1)),
+                          "the mesh has too many elements for the geodesic metric");
+    m_mesh = std::make_shared<const Indexed>(tm, vpm);
+    m_marching_mesh = std::make_shared<const Marching_mesh>(*m_mesh);
   }
 
-  /// Called by the diagram with the sites. Starts from scratch: no distance of an earlier
-  /// set of sites is kept.
-  void set_sites(const TriangleMesh& /* tm */, const std::vector<Face_location>& sites)
+  /// a copy with fronts of its own
+  Geodesic_metric(const Geodesic_metric& other)
+    : m_mesh(other.m_mesh), m_marching_mesh(other.m_marching_mesh),
+      m_marching(other.m_marching ? new Marching(*other.m_marching) : nullptr)
+  {}
+  /// \cond SKIP_IN_MANUAL
+  Geodesic_metric(Geodesic_metric&&) = default;
+  Geodesic_metric& operator=(const Geodesic_metric&) = delete;
+  /// \endcond
+
+  /// the mesh the metric was built on
+  const Triangle_mesh& triangle_mesh() const { return *m_mesh->source_mesh; }
+
+  /// Starts from scratch with these sites: no distance of an earlier set is kept.
+  /// \throws Input_error if a site is not in a face of the mesh
+  void set_sites(const std::vector<Face_location>& sites)
   {
+    const internal::Site_locator<TriangleMesh> locator(triangle_mesh(), *m_mesh, std::numeric_limits<double>::infinity());
     std::vector<internal::Marching_seed> seeds(sites.size());
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
-      seeds[i].face = static_cast<std::uint32_t>(get(m_state->mesh.face_index, sites[i].first));
+      const internal::Site s = locator.locate(sites[i], i);
+      seeds[i].face = static_cast<std::uint32_t>(s.face);
+      // the coordinates as given: the diagram passes them already normalized
       seeds[i].barycentric = { sites[i].second[0], sites[i].second[1], sites[i].second[2] };
     }
-    m_state->marching.reset(new internal::Local_fast_marching(m_state->marching_mesh));
-    m_state->marching->set_seeds(seeds);
+    m_marching.reset(new Marching(*m_marching_mesh));
+    m_marching->set_seeds(seeds);
   }
 
+  /// \deprecated the mesh is the one the metric was built on: use `set_sites(sites)`
+  CGAL_DEPRECATED_MSG("use set_sites(sites)")
+  void set_sites(const TriangleMesh&, const std::vector<Face_location>& sites) { set_sites(sites); }
+
   /// the squared geodesic distance between site `i` and vertex `v`
-  /// \pre `set_sites()` was called, `v` is on the same connected component as site `i`
+  /// \pre `set_sites()` was called
+  /// \throws Input_error if `i` is not a site index
   double squared_distance(std::size_t i, vertex_descriptor v)
   {
-    if(!m_state->marching)
-      throw Input_error("Geodesic_metric: set_sites() must be called before distances are asked for");
-    const double d = m_state->marching->distance(i, static_cast<std::uint32_t>(get(m_state->mesh.vertex_index, v)));
-    return d * d;
+    return indexed_squared_distance(i, get(m_mesh->vertex_index, v));
   }
 
   /// the geodesic distance between site `i` and the surface point `l` (a location in a face):
   /// straight inside the site's own face, otherwise from the distances at the face's corners
   /// by the same point-source update as between vertices
+  /// \pre `set_sites()` was called
+  /// \throws Input_error if `i` is not a site index or `l` is not in a face of the mesh
   double distance(std::size_t i, const Face_location& l)
   {
-    if(!m_state->marching)
-      throw Input_error("Geodesic_metric: set_sites() must be called before distances are asked for");
-    return m_state->marching->distance_at(i, static_cast<std::uint32_t>(get(m_state->mesh.face_index, l.first)),
-                                          { l.second[0], l.second[1], l.second[2] });
+    check_site(i);
+    const internal::Site_locator<TriangleMesh> locator(triangle_mesh(), *m_mesh, std::numeric_limits<double>::infinity());
+    const std::size_t f = locator.locate(l, i).face;
+    return m_marching->distance_at(i, static_cast<std::uint32_t>(f), { l.second[0], l.second[1], l.second[2] });
   }
 
   /// the number of (site, vertex) distances computed since the last `set_sites()`: the work
   /// done, a small multiple of the number of vertices when the sites are spread out
   std::size_t number_of_computed_distances() const
   {
-    return m_state->marching ? m_state->marching->accepted_vertices : 0;
+    return m_marching ? m_marching->accepted_vertices : 0;
   }
 
-private:
-  struct State
+  /// \cond SKIP_IN_MANUAL
+  // Internal hooks of the diagram: the indexed copy of the mesh it shares, and distances
+  // keyed by vertex index.
+  const std::shared_ptr<const Indexed>& indexed_mesh() const { return m_mesh; }
+  double indexed_squared_distance(std::size_t i, std::size_t v)
   {
-    internal::Indexed_mesh<TriangleMesh> mesh;
-    internal::Fast_marching_mesh marching_mesh;
-    std::unique_ptr<internal::Local_fast_marching> marching;
-  };
-  // shared so that the metric stays CopyConstructible and cheap to copy, as the concept asks
-  std::shared_ptr<State> m_state;
+    check_site(i);
+    if(v >= m_mesh->number_of_vertices()) throw Input_error("Geodesic_metric: the vertex is not a vertex of the mesh");
+    const double d = m_marching->distance(i, static_cast<std::uint32_t>(v));
+    return d * d;
+  }
+  /// \endcond
+
+private:
+  void check_site(std::size_t i) const
+  {
+    CGAL_precondition_msg(m_marching != nullptr, "set_sites() must be called before distances are asked for");
+    if(!m_marching || i >= m_marching->number_of_seeds())
+      throw Input_error("Geodesic_metric: " + std::to_string(i) + " is not a site index");
+  }
+
+  std::shared_ptr<const Indexed> m_mesh;                  // immutable: shared by copies
+  std::shared_ptr<const Marching_mesh> m_marching_mesh;   // immutable: shared by copies
+  std::unique_ptr<Marching> m_marching;                   // the fronts: each copy its own
 };
 
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_GEODESIC_METRIC_H

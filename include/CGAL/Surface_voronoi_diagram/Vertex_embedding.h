@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Any per-vertex embedding the user already has (a spectral embedding of their own, a
 // feature space, ...), read from a property map.
@@ -7,13 +15,16 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VERTEX_EMBEDDING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_VERTEX_EMBEDDING_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+
+#include <CGAL/assertions.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
-#include <cmath>
 #include <string>
 
 namespace CGAL {
@@ -21,42 +32,54 @@ namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// A user-supplied embedding: `get(map, v)` returns a random-access range of `dimension`
-/// numbers (`std::vector<double>`, `std::array<double, N>`, `Eigen::VectorXd`, ...).
-/// The ranges are read when the diagram is built; a range of the wrong size or with a
-/// non-finite value makes the diagram throw `Input_error`.
+/// numbers (`std::vector<double>`, `std::array<double, N>`, `Eigen::VectorXd`, ...). The
+/// ranges are read when a diagram is built; they must hold finite numbers (a precondition),
+/// and a range of another size makes the diagram throw `Input_error`. Squared distances,
+/// and power weights, are in the squared units of these coordinates.
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam VertexCoordinatesMap a model of `ReadablePropertyMap` from vertices to ranges
 /// \cgalModels `SurfaceVoronoiEmbedding`
 template <class TriangleMesh, class VertexCoordinatesMap>
 class Vertex_embedding
 {
 public:
+  /// the mesh type
   typedef TriangleMesh Triangle_mesh;
+  /// `Embedding_tag`
   typedef Embedding_tag Metric_category;
+  /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
 
-  Vertex_embedding(VertexCoordinatesMap map, std::size_t dimension)
-    : m_map(map), m_dimension(dimension)
+  /// the embedding of the vertices of `tm` given by `map`, of dimension `dimension`
+  /// \pre `dimension >= 1`
+  Vertex_embedding(const TriangleMesh& tm, VertexCoordinatesMap map, std::size_t dimension)
+    : m_tm(&tm), m_map(map), m_dimension(dimension)
   {
-    if(dimension == 0)
-      throw Input_error("a vertex embedding needs at least one coordinate");
+    CGAL_precondition_msg(dimension >= 1, "a vertex embedding needs at least one coordinate");
   }
 
+  /// the mesh the embedding belongs to
+  const Triangle_mesh& triangle_mesh() const { return *m_tm; }
+
+  /// the dimension given at construction
   std::size_t dimension() const { return m_dimension; }
 
-  void coordinates(vertex_descriptor v, double* out) const
+  /// writes the `dimension()` coordinates of `v` to `out`
+  /// \throws Input_error if the range of `v` does not hold `dimension()` numbers
+  template <class OutputIterator>
+  OutputIterator coordinates(vertex_descriptor v, OutputIterator out) const
   {
     const auto& c = get(m_map, v);
     if(static_cast<std::size_t>(c.size()) != m_dimension)
       throw Input_error("a vertex embedding has " + std::to_string(c.size()) + " coordinates, expected "
                         + std::to_string(m_dimension));
     for(std::size_t k = 0; k < m_dimension; ++k)
-    {
-      out[k] = static_cast<double>(c[k]);
-      if(!std::isfinite(out[k]))
-        throw Input_error("a vertex embedding has a non-finite coordinate");
-    }
+      *out++ = static_cast<double>(c[k]);
+    return out;
   }
 
 private:
+  const TriangleMesh* m_tm;
   VertexCoordinatesMap m_map;
   std::size_t m_dimension;
 };
@@ -65,12 +88,12 @@ private:
 /// Makes a `Vertex_embedding` from a property map.
 template <class TriangleMesh, class VertexCoordinatesMap>
 Vertex_embedding<TriangleMesh, VertexCoordinatesMap>
-make_vertex_embedding(const TriangleMesh&, VertexCoordinatesMap map, std::size_t dimension)
+make_vertex_embedding(const TriangleMesh& tm, VertexCoordinatesMap map, std::size_t dimension)
 {
-  return Vertex_embedding<TriangleMesh, VertexCoordinatesMap>(map, dimension);
+  return Vertex_embedding<TriangleMesh, VertexCoordinatesMap>(tm, map, dimension);
 }
 
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_VERTEX_EMBEDDING_H

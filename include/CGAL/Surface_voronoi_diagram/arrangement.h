@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Output: the arrangement, i.e. the input surface refined along every bisector, written into
 // any MutableFaceGraph (Surface_mesh, Polyhedron_3, ...). Every face is a convex planar
@@ -8,9 +16,12 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_ARRANGEMENT_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_ARRANGEMENT_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
-#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
+
+#include <CGAL/assertions.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -37,24 +48,49 @@ Value site_value(std::size_t site)
 
 /// \ingroup PkgSurfaceVoronoiDiagramOutputs
 ///
-/// Writes the arrangement of `diagram` into `out` (appended to what `out` holds).
+/// Writes the arrangement of `diagram` into `out` (added to what `out` holds): the input
+/// surface refined along every bisector. Every face is a convex planar polygon inside one
+/// input triangle and inside one cell; the result passes `CGAL::is_valid_polygon_mesh()`.
 ///
 /// \tparam Diagram a `CGAL::Surface_voronoi_diagram`
 /// \tparam PolygonMesh a model of `MutableFaceGraph`
 /// \param diagram the diagram
-/// \param out the output mesh; the arrangement is added to it
-/// \param np optional named parameters:
-///   - `vertex_point_map`: the output's point map (default: internal `vertex_point`)
-///   - `face_patch_map`: writable, output face -> site index (`-1` converted to the value
-///      type where no site reaches)
-///   - `edge_is_constrained_map`: writable, output edge -> `true` on cell boundaries: bisectors
-///      (edges whose two faces belong to different sites, or to a site and the unreached
-///      area) and breakline edges
-///   - `vertex_is_constrained_map`: writable, output vertex -> `true` at Voronoi vertices
-///      (three or more cells meet, the surface border counting as one)
-///   - `Surface_voronoi::parameters::input_face_map`: writable, output face -> the input
-///      face containing it
-/// \throws Surface_voronoi::Error if the pieces do not form a valid polygon mesh (a bug)
+/// \param out the output mesh
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the property map of the points of `out`}
+///     \cgalParamType{a model of `WritablePropertyMap` with `PolygonMesh`'s vertices as key}
+///     \cgalParamDefault{`get(CGAL::vertex_point, out)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_patch_map}
+///     \cgalParamDescription{receives the site of each output face (`-1`, converted to the
+///       value type, where no site reaches)}
+///     \cgalParamType{a model of `WritablePropertyMap` with `PolygonMesh`'s faces as key and an integer type as value}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{receives `true` for the edges on cell boundaries: bisectors (edges
+///       whose two faces belong to different sites, or to a site and the unreached area) and
+///       breakline edges; `false` for the others}
+///     \cgalParamType{a model of `WritablePropertyMap` with `PolygonMesh`'s edges as key and `bool` as value}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_is_constrained_map}
+///     \cgalParamDescription{receives `true` at Voronoi vertices (three or more cells meet, the
+///       surface border counting as one), `false` elsewhere}
+///     \cgalParamType{a model of `WritablePropertyMap` with `PolygonMesh`'s vertices as key and `bool` as value}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::input_face_map}
+///     \cgalParamDescription{receives the face of the diagram's mesh containing each output face}
+///     \cgalParamType{a model of `WritablePropertyMap` with `PolygonMesh`'s faces as key and the diagram's faces as value}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `!diagram.is_cancelled()`
 template <class Diagram, class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void make_arrangement(const Diagram& diagram, PolygonMesh& out,
                       const NamedParameters& np = CGAL::parameters::default_values())
@@ -79,7 +115,9 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
                                      CGAL::Constant_property_map<face_descriptor, typename Diagram::face_descriptor>());
   typedef typename boost::property_traits<decltype(face_site)>::value_type Site_value;
 
-  const typename Diagram::Partition& partition = diagram.partition();
+  CGAL_precondition_msg(!diagram.is_cancelled(), "the diagram was cancelled: it has no cells");
+  const auto& data = internal::Diagram_access::data(diagram);
+  const internal::Partition& partition = data.partition;
   std::vector<vertex_descriptor> vmap(partition.vertices.size(), GT::null_vertex());
   std::vector<std::size_t> site_of_face;
   std::vector<face_descriptor> created;
@@ -94,16 +132,16 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
       {
         vmap[id] = add_vertex(out);
         const auto& p = partition.vertices[id].point;
-        put(vpm, vmap[id], Point(p[0], p[1], p[2]));
+        put(vpm, vmap[id], Point(p.x(), p.y(), p.z()));
       }
       polygon.push_back(vmap[id]);
     }
     const face_descriptor f = CGAL::Euler::add_face(polygon, out);
-    if(f == GT::null_face())
-      throw Error("the arrangement could not be built: piece of site " + std::to_string(piece.site) + " in face "
-                  + std::to_string(piece.face) + " does not fit (please report this mesh)");
+    // stitching makes the pieces a valid polygon mesh: a piece that does not fit is a bug
+    CGAL_assertion_msg(f != GT::null_face(), "a piece of the partition does not fit its neighbours");
+    if(f == GT::null_face()) continue;
     put(face_site, f, internal::site_value<Site_value>(piece.site));
-    put(input_face, f, diagram.face_handle(piece.face));
+    put(input_face, f, data.mesh->face_handles[piece.face]);
     created.push_back(f);
     site_of_face.push_back(piece.site);
   }
@@ -120,7 +158,7 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
   };
   // partition vertex of each output vertex (1 + id), to find the edges on breaklines
   auto partition_id = get(CGAL::dynamic_vertex_property_t<std::size_t>(), out);
-  const bool has_breaklines = diagram.number_of_breakline_edges() > 0;
+  const bool has_breaklines = !data.breaklines.empty();
   if(has_breaklines)
   {
     for(vertex_descriptor v : vertices(out)) put(partition_id, v, 0);
@@ -130,7 +168,7 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
   auto on_breakline = [&](halfedge_descriptor h) {
     if(!has_breaklines) return false;
     const std::size_t a = get(partition_id, source(h, out)), b = get(partition_id, target(h, out));
-    return a > 0 && b > 0 && diagram.on_breakline(a - 1, b - 1);
+    return a > 0 && b > 0 && data.breaklines.joins(*data.mesh, partition, a - 1, b - 1);
   };
   for(face_descriptor f : created)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out))
@@ -156,4 +194,4 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_ARRANGEMENT_H

@@ -1,17 +1,27 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// Remeshing by the dual (paper 4.7.3): the restricted Delaunay triangulation dual to the
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Remeshing by the dual (\cgalCite{cgal:xwz-svdm-22}, 4.7.3): the restricted Delaunay triangulation dual to the
 // diagram, one triangle per Voronoi vertex (a fan of triangles where more than three cells
 // meet), on the sites, oriented with the surface.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_DUAL_TRIANGULATION_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_DUAL_TRIANGULATION_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Surface_voronoi_diagram/arrangement.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -28,12 +38,17 @@ namespace Surface_voronoi {
 /// sites in counter-clockwise order seen from the surface's outside (the order of the cells
 /// around the vertex). Where k > 3 cells meet, a fan of k - 2 triangles. Voronoi vertices on
 /// the border of the surface give no triangle.
+/// \tparam Diagram a `CGAL::Surface_voronoi_diagram`
+/// \tparam PointOutputIterator an output iterator accepting `Diagram::Point_3`
+/// \tparam TriangleOutputIterator an output iterator accepting `std::array<std::size_t, 3>`
 /// \returns `true` if the soup is a valid polygon mesh (a 2-manifold, possibly with border),
 ///          which is the case when every cell is a disk
+/// \pre `!diagram.is_cancelled()`
 template <class Diagram, class PointOutputIterator, class TriangleOutputIterator>
 bool dual_triangulation(const Diagram& diagram, PointOutputIterator points, TriangleOutputIterator triangles)
 {
-  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+  CGAL_precondition_msg(!diagram.is_cancelled(), "the diagram was cancelled: it has no cells");
+  typedef CGAL::Surface_mesh<internal::Point_d> Mesh;
   Mesh arrangement;
   auto site = arrangement.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -1).first;
   make_arrangement(diagram, arrangement, CGAL::parameters::face_patch_map(site));
@@ -68,4 +83,4 @@ bool dual_triangulation(const Diagram& diagram, PointOutputIterator points, Tria
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_DUAL_TRIANGULATION_H

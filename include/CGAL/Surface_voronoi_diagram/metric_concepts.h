@@ -1,10 +1,20 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// Tags that tell the diagram how a metric model gives its distances.
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The tags that tell the diagram which of the two metric concepts a model follows.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_METRIC_CONCEPTS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_METRIC_CONCEPTS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <type_traits>
 
@@ -18,10 +28,10 @@ namespace Surface_voronoi {
 struct Embedding_tag {};
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
-/// `Metric_category` of a model of `SurfaceVoronoiMetric` that is not an embedding: it gives
-/// squared distances between a site and a vertex, possibly computed lazily, only where the
-/// site propagates. Inside a face the squared distance is interpolated linearly (an
-/// approximation, paper eq. 4-5).
+/// `Metric_category` of a model of `SurfaceVoronoiLazyMetric`: squared distances between a
+/// site and a vertex, computed on demand, only where the site propagates. Inside a face the
+/// squared distance is interpolated linearly, an approximation (\cgalCite{cgal:xwz-svdm-22},
+/// eq. 4-5).
 struct Lazy_metric_tag {};
 
 namespace internal {
@@ -34,4 +44,4 @@ struct Is_embedding
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_METRIC_CONCEPTS_H

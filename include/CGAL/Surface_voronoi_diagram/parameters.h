@@ -1,62 +1,146 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// Named parameters of this package that CGAL 5.5 does not define. They chain with CGAL's
-// own: `Surface_voronoi::parameters::input_face_map(m).face_patch_map(site_map)` (the
-// package's parameter first, since CGAL's chain has no member for it).
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The package's named parameters. They use CGAL's own mechanism (a tag in `internal_np` and
+// a `Named_function_parameters` chain), so they mix with CGAL's parameters:
+// `Surface_voronoi::parameters::embedding_dimension(20).vertex_point_map(vpm)`, or, to append
+// a package parameter to a chain that starts with CGAL's,
+// `Surface_voronoi::parameters::embedding_dimension(20, CGAL::parameters::vertex_point_map(vpm))`.
+// What each parameter means is documented with the functions and classes that read it.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_PARAMETERS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_PARAMETERS_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
 
 namespace CGAL {
 namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// How the candidate sites of each face are chosen (named parameter `candidate_selection`).
+enum class Candidate_selection
+{
+  /// SurfaceVoronoi's propagation: a site enters a face only from a neighbouring face where
+  /// it was admitted (the default; never crosses border edges or breaklines)
+  PROPAGATION,
+  /// every site that is nearest somewhere in the face, with no propagation and no repair:
+  /// the classic restricted Voronoi diagram (RVD), a baseline for embedding metrics
+  GLOBAL_NEAREST
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// What the diagram does with two sites at the same surface point (named parameter
+/// `coincident_sites`).
+enum class Coincident_sites
+{
+  /// they violate a precondition (checked by `validate_input()`); the default
+  REJECT,
+  /// the later site is merged into the earlier one: it keeps its index but owns no area,
+  /// and `Surface_voronoi_diagram::merged_into()` names the site that owns its cell
+  MERGE
+};
+
 namespace internal_np {
-enum input_face_map_t { input_face_map };
 enum site_weight_map_t { site_weight_map };
+enum candidate_selection_t { candidate_selection };
+enum repair_cells_t { repair_cells };
+enum max_repair_rounds_t { max_repair_rounds };
+enum max_site_distance_t { max_site_distance };
+enum coincident_sites_t { coincident_sites };
+enum embedding_dimension_t { embedding_dimension };
+enum eigen_tolerance_t { eigen_tolerance };
+enum max_eigen_solver_restarts_t { max_eigen_solver_restarts };
+enum refinement_trigger_ratio_t { refinement_trigger_ratio };
+enum refinement_edge_length_ratio_t { refinement_edge_length_ratio };
+enum refinement_max_vertices_t { refinement_max_vertices };
+enum input_face_map_t { input_face_map };
+enum stage_times_t { stage_times };
 } // namespace internal_np
 
 namespace parameters {
 
-/// \ingroup PkgSurfaceVoronoiDiagramRef
-/// A writable property map from faces of an output mesh to the faces of the diagram's
-/// input mesh that contain them.
-template <class Map>
-CGAL::Named_function_parameters<Map, internal_np::input_face_map_t> input_face_map(const Map& m)
-{
-  return CGAL::Named_function_parameters<Map, internal_np::input_face_map_t>(m);
-}
+#define CGAL_SURFACE_VORONOI_NAMED_PARAMETER(NAME)                                                               \
+  template <class T>                                                                                             \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)                                 \
+  {                                                                                                              \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);                                    \
+  }                                                                                                              \
+  template <class T, class NP_T, class NP_Tag, class NP_Base>                                                    \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> > \
+  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& chain)                     \
+  {                                                                                                              \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t,                                            \
+                                           CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(value, chain); \
+  }
 
-/// the same, appended to an existing chain of named parameters
-template <class Map, class T, class Tag, class Base>
-CGAL::Named_function_parameters<Map, internal_np::input_face_map_t, CGAL::Named_function_parameters<T, Tag, Base> >
-input_face_map(const Map& m, const CGAL::Named_function_parameters<T, Tag, Base>& np)
-{
-  return CGAL::Named_function_parameters<Map, internal_np::input_face_map_t, CGAL::Named_function_parameters<T, Tag, Base> >(m, np);
-}
+#ifdef DOXYGEN_RUNNING
+/// \ingroup PkgSurfaceVoronoiDiagramNamedParameters
+/// \name Named parameters of the package
+/// Each function makes a chain of named parameters holding `value`; the overload with a
+/// second argument appends it to an existing chain (CGAL's chains have no member function
+/// for the package's parameters, so package parameters are added this way or first).
+/// @{
+/// power weights of the sites (`Surface_voronoi_diagram`, `lloyd_relaxation()`, `validate_input()`)
+template <class T> unspecified_type site_weight_map(const T& value);
+/// `Candidate_selection` of the diagram
+template <class T> unspecified_type candidate_selection(const T& value);
+/// whether the diagram repairs cells found in several pieces (`bool`)
+template <class T> unspecified_type repair_cells(const T& value);
+/// the most repair rounds of the diagram (`std::size_t`)
+template <class T> unspecified_type max_repair_rounds(const T& value);
+/// the farthest a site given as a point may be from the surface (`double`)
+template <class T> unspecified_type max_site_distance(const T& value);
+/// the `Coincident_sites` policy of the diagram
+template <class T> unspecified_type coincident_sites(const T& value);
+/// the dimension `d` of `Biharmonic_embedding` (`std::size_t`)
+template <class T> unspecified_type embedding_dimension(const T& value);
+/// the relative tolerance of the eigen-solver of `Biharmonic_embedding` (`double`)
+template <class T> unspecified_type eigen_tolerance(const T& value);
+/// the most restarts of the eigen-solver of `Biharmonic_embedding` (`std::size_t`)
+template <class T> unspecified_type max_eigen_solver_restarts(const T& value);
+/// when `refine_for_sites()` splits edges, relative to the site spacing (`double`)
+template <class T> unspecified_type refinement_trigger_ratio(const T& value);
+/// down to which length `refine_for_sites()` splits, relative to the site spacing (`double`)
+template <class T> unspecified_type refinement_edge_length_ratio(const T& value);
+/// the largest mesh `refine_for_sites()` may make (`std::size_t` vertices)
+template <class T> unspecified_type refinement_max_vertices(const T& value);
+/// an output face -> input face property map (`make_arrangement()`, `insert_sites()`, `refine_for_sites()`)
+template <class T> unspecified_type input_face_map(const T& value);
+/// @}
+#else
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(candidate_selection)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(repair_cells)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_repair_rounds)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_site_distance)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(coincident_sites)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(embedding_dimension)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(eigen_tolerance)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_eigen_solver_restarts)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_trigger_ratio)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_edge_length_ratio)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_max_vertices)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(input_face_map)
+// An internal hook, not API: the command-line program reads stage times through it.
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
+#endif
 
-/// \ingroup PkgSurfaceVoronoiDiagramRef
-/// A readable property map from the sites, as the diagram's site range holds them
-/// (`vertex_descriptor`, `Face_location` or `Point_3`), to their power weights (a type
-/// convertible to `double`, in squared units of the metric). For vertex sites, a vertex
-/// property map of the mesh. Weights by site index go in `Diagram_options::weights`.
-template <class Map>
-CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t> site_weight_map(const Map& m)
-{
-  return CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t>(m);
-}
-
-/// the same, appended to an existing chain of named parameters
-template <class Map, class T, class Tag, class Base>
-CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t, CGAL::Named_function_parameters<T, Tag, Base> >
-site_weight_map(const Map& m, const CGAL::Named_function_parameters<T, Tag, Base>& np)
-{
-  return CGAL::Named_function_parameters<Map, internal_np::site_weight_map_t, CGAL::Named_function_parameters<T, Tag, Base> >(m, np);
-}
+#undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER
 
 } // namespace parameters
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_PARAMETERS_H

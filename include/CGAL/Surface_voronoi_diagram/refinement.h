@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Refinement for coarse meshes: when sites outnumber the vertices around them (CAD meshes
 // with long needle triangles), no metric sampled at vertices can tell the sites apart.
@@ -10,189 +18,358 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_REFINEMENT_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_REFINEMENT_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
-#include <CGAL/Surface_voronoi_diagram/internal/working_copy.h>
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <queue>
-#include <string>
-#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_voronoi {
 
-/// \ingroup PkgSurfaceVoronoiDiagramSites
-/// Settings of `refine_for_sites()`.
-struct Refinement_options
+CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated Use the named parameters of `refine_for_sites()`.
+struct CGAL_DEPRECATED_MSG("use the named parameters of refine_for_sites")
+Refinement_options
 {
-  /// Edges longer than `trigger_ratio` times the site spacing `sqrt(area / number of sites)`
-  /// are split, and so, recursively, are the edges the splits create, down to
-  /// `edge_length_ratio` times the spacing. Edges that are long but below the trigger are
-  /// left alone: a mesh that is merely a little coarse keeps its size, while the needles of a
-  /// CAD mesh are refined where they are. Measured with the geodesic metric on the model zoo
-  /// (benchmark_metric_study): these defaults keep every model within 3% of the exact
-  /// geodesic diagram at 100 and 1000 sites.
+  /// see `refinement_trigger_ratio`
   double trigger_ratio = 0.75;
-  /// see `trigger_ratio`
+  /// see `refinement_edge_length_ratio`
   double edge_length_ratio = 0.4;
-  /// refusing to grow the mesh beyond this many vertices (an `Input_error`)
+  /// see `refinement_max_vertices`
   std::size_t max_vertices = 20000000;
 };
+namespace internal {
+template <class T> struct Is_refinement_options : std::is_same<typename std::remove_cv<T>::type, Refinement_options> {};
+} // namespace internal
+CGAL_SURFACE_VORONOI_DEPRECATED_END
+
+namespace internal {
+// The halfedge an edge is split from. A Surface_mesh edge descriptor remembers the halfedge
+// it was made from, so its own halfedge(e) depends on how the descriptor was obtained: take
+// the edge's first halfedge instead, as an index-built descriptor has it.
+template <class PolygonMesh>
+typename boost::graph_traits<PolygonMesh>::halfedge_descriptor
+split_halfedge(typename boost::graph_traits<PolygonMesh>::edge_descriptor e, const PolygonMesh& pm)
+{
+  return halfedge(e, pm);
+}
+template <class P>
+typename CGAL::Surface_mesh<P>::Halfedge_index
+split_halfedge(typename CGAL::Surface_mesh<P>::Edge_index e, const CGAL::Surface_mesh<P>& sm)
+{
+  return sm.halfedge(e, 0);
+}
+} // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// The refined copy made by `refine_for_sites()`.
-template <class TriangleMesh, class Point_3>
-struct Refinement_result
+/// What `refine_for_sites()` made.
+template <class PolygonMesh>
+struct Refined_sites
 {
-  typedef CGAL::Surface_mesh<Point_3> Mesh;
-  typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
-  /// the refined mesh: the same surface; edges created by the refinement are not longer
-  /// than `target_edge_length`
-  Mesh mesh;
-  /// the sites as locations on `mesh`, in the input order
-  std::vector<Location> sites;
-  /// for each face of `mesh`, the input face that contains it
-  typename Mesh::template Property_map<typename Mesh::Face_index,
-                                       typename boost::graph_traits<TriangleMesh>::face_descriptor> input_face;
+  /// the sites as locations on the refined mesh, in the input order
+  std::vector<CGAL::Polygon_mesh_processing::Face_location<PolygonMesh, double> > sites;
+  /// the length the refinement splits edges down to
   double target_edge_length = 0;
+  /// the number of edges split (0: the mesh was copied unchanged)
   std::size_t edges_split = 0;
+  /// whether the refinement stopped at `refinement_max_vertices` before reaching its target
+  bool vertex_limit_reached = false;
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// Copies `tm` and splits its edges longer than `options.trigger_ratio * sqrt(area / sites.size())`
-/// at their midpoints (the faces on both sides are split in their own plane), and the edges
-/// these splits create until they are no longer than `options.edge_length_ratio` times the
-/// same spacing; then locates the sites on the copy. A mesh without edges above the trigger is
-/// copied unchanged (`edges_split == 0`).
+/// Copies `tm` into `out` and splits the copy's edges longer than a trigger length
+/// `t * sqrt(area / sites.size())` at their midpoints (the faces on both sides are split in
+/// their own plane), and the edges these splits create until they are no longer than
+/// `r * sqrt(area / sites.size())`; then locates the sites on `out`. A mesh without edges
+/// above the trigger is copied unchanged. Only edges shorter than the edge just split are
+/// split next, so that the slivers of a CAD mesh cannot make it run forever.
 ///
 /// Use it before a metric sampled at vertices (`Geodesic_metric`, the embeddings) when the
 /// mesh has fewer than about ten vertices per site where the sites are.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam LocationRange a range of `Polygon_mesh_processing::Face_location`s of `tm`
+/// \tparam PolygonMesh a model of `MutableFaceGraph`
 /// \param tm a triangle mesh; it is copied, never modified
-/// \param sites a range of `Polygon_mesh_processing::Face_location`s of `tm`
-/// \param options the target edge length (relative to the site spacing) and a size limit
-/// \param np optional `vertex_point_map` of `tm`
-/// \throws Input_error if there are no sites, or if the refinement would exceed `options.max_vertices`
-template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Refinement_result<TriangleMesh,
-                  typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
-refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, const Refinement_options& options = Refinement_options(),
-                 const NamedParameters& np = CGAL::parameters::default_values())
+/// \param sites the sites, at least one
+/// \param out an empty mesh that receives the refined copy
+/// \param np_in an optional sequence of named parameters for `tm` and the refinement:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_trigger_ratio}
+///     \cgalParamDescription{`t`: edges longer than `t` times the site spacing are split}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.75 (measured with the geodesic metric on the benchmark's models:
+///       every model within 3% of the exact geodesic diagram at 100 and 1000 sites)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_edge_length_ratio}
+///     \cgalParamDescription{`r`: the length, relative to the site spacing, that splitting goes down to}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0.4}
+///     \cgalParamExtra{`0 < r <= t`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_max_vertices}
+///     \cgalParamDescription{the refinement stops before the copy has more vertices than this,
+///       and says so in `vertex_limit_reached`}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{20,000,000}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \param np_out an optional sequence of named parameters for `out`:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `out`}
+///     \cgalParamType{a model of `ReadWritePropertyMap`}
+///     \cgalParamDefault{`get(CGAL::vertex_point, out)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::input_face_map}
+///     \cgalParamDescription{receives, for each face of `out`, the face of `tm` that contains it}
+///     \cgalParamType{a model of `WritablePropertyMap` from the faces of `out` to those of `tm`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `tm` is a triangle mesh, `sites` is not empty, `out` is empty
+template <class TriangleMesh, class LocationRange, class PolygonMesh,
+          class NamedParametersIn = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          , typename std::enable_if<!internal::Is_refinement_options<PolygonMesh>::value, int>::type = 0
+#endif
+          >
+Refined_sites<PolygonMesh>
+refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh& out,
+                 const NamedParametersIn& np_in = CGAL::parameters::default_values(),
+                 const NamedParametersOut& np_out = CGAL::parameters::default_values())
 {
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename boost::property_traits<VPM>::value_type Point_3;
-  typedef Refinement_result<TriangleMesh, Point_3> Result;
-  typedef typename Result::Mesh Mesh;
-  typedef typename Mesh::Face_index F;
-  typedef typename Mesh::Edge_index E;
-  typedef typename Mesh::Halfedge_index H;
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::face_descriptor F;
+  typedef typename GT::edge_descriptor E;
+  typedef typename GT::halfedge_descriptor H;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Input_face;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
 
-  if(!(options.edge_length_ratio > 0) || !std::isfinite(options.edge_length_ratio) ||
-     !(options.trigger_ratio >= options.edge_length_ratio) || !std::isfinite(options.trigger_ratio))
-    throw Input_error("refine_for_sites: edge_length_ratio must be positive and trigger_ratio at least as large");
+  const double trigger_ratio = choose_parameter(get_parameter(np_in, internal_np::refinement_trigger_ratio), 0.75);
+  const double edge_length_ratio = choose_parameter(get_parameter(np_in, internal_np::refinement_edge_length_ratio), 0.4);
+  const std::size_t max_vertices = choose_parameter(get_parameter(np_in, internal_np::refinement_max_vertices), std::size_t(20000000));
+  CGAL_precondition_msg(edge_length_ratio > 0 && std::isfinite(edge_length_ratio) && trigger_ratio >= edge_length_ratio
+                        && std::isfinite(trigger_ratio), "refinement_edge_length_ratio must be positive and at most refinement_trigger_ratio");
   const std::size_t n = static_cast<std::size_t>(std::distance(std::begin(sites), std::end(sites)));
-  if(n == 0) throw Input_error("refine_for_sites: no sites");
+  CGAL_precondition_msg(n > 0, "refine_for_sites needs sites");
+  CGAL_precondition_msg(faces(out).empty(), "the output mesh must be empty");
 
-  VPM vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                               get_const_property_map(CGAL::vertex_point, tm));
-  Result r;
-  Mesh& m = r.mesh;
+  const auto vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto ovpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, out));
+  typedef typename boost::property_traits<typename std::remove_const<decltype(ovpm)>::type>::value_type Point;
+
+  // the copy, each face knowing the input face it lies in
   std::vector<std::pair<Input_face, F> > f2f;
-  r.input_face = internal::copy_with_input_faces(tm, vpm, m, f2f);
+  CGAL::copy_face_graph(tm, out, CGAL::parameters::vertex_point_map(vpm).face_to_face_output_iterator(std::back_inserter(f2f)),
+                        CGAL::parameters::vertex_point_map(ovpm));
+  auto input_face = get(CGAL::dynamic_face_property_t<Input_face>(), out);
+  for(const auto& p : f2f) put(input_face, p.second, p.first);
 
-  const double area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(m));
-  r.target_edge_length = options.edge_length_ratio * std::sqrt(area / double(n));
-  const double trigger = options.trigger_ratio * std::sqrt(area / double(n));
+  Refined_sites<PolygonMesh> r;
+  double area = 0;
+  for(F f : faces(out))
+  {
+    const H h = halfedge(f, out);
+    area += internal::triangle_area(internal::to_point_d(get(ovpm, source(h, out))), internal::to_point_d(get(ovpm, target(h, out))),
+                                    internal::to_point_d(get(ovpm, target(next(h, out), out))));
+  }
+  r.target_edge_length = edge_length_ratio * std::sqrt(area / double(n));
+  const double trigger = trigger_ratio * std::sqrt(area / double(n));
   const double limit2 = r.target_edge_length * r.target_edge_length;
-  auto length2 = [&](E e) { return CGAL::to_double(CGAL::squared_distance(m.point(source(halfedge(e, m), m)), m.point(target(halfedge(e, m), m)))); };
+  auto length2 = [&](E e) {
+    return CGAL::to_double(CGAL::squared_distance(get(ovpm, source(halfedge(e, out), out)), get(ovpm, target(halfedge(e, out), out))));
+  };
 
-  // longest first; ties by index, so that the result does not depend on anything else
+  // Edges get ids in the order they are created, so that ties between equal lengths are
+  // broken the same way whatever the mesh type.
+  std::vector<E> edge_of_id;
+  auto edge_id = get(CGAL::dynamic_edge_property_t<std::size_t>(), out);
+  auto id_of = [&](E e) {
+    std::size_t id = get(edge_id, e);
+    if(id >= edge_of_id.size() || edge_of_id[id] != e)
+    {
+      id = edge_of_id.size();
+      edge_of_id.push_back(e);
+      put(edge_id, e, id);
+    }
+    return id;
+  };
+  for(E e : edges(out)) id_of(e);
+
+  // longest first; ties by id
   typedef std::pair<double, std::size_t> Item;
   std::priority_queue<Item> queue;
-  for(E e : edges(m))
-    if(length2(e) > trigger * trigger) queue.push(Item(length2(e), std::size_t(e)));
+  for(E e : edges(out))
+    if(length2(e) > trigger * trigger) queue.push(Item(length2(e), id_of(e)));
   while(!queue.empty())
   {
     const Item top = queue.top();
     queue.pop();
-    const E e(static_cast<typename E::size_type>(top.second));
+    const E e = edge_of_id[top.second];
     if(length2(e) != top.first) continue;   // split already
-    if(num_vertices(m) >= options.max_vertices)
-      throw Input_error("refine_for_sites: the refined mesh would exceed " + std::to_string(options.max_vertices) + " vertices");
-    const H h = halfedge(e, m);
-    const Point_3 mid = CGAL::midpoint(m.point(source(h, m)), m.point(target(h, m)));
-    // split_edge: hnew runs from the old source to the new vertex, followed by h
-    const H hnew = CGAL::Euler::split_edge(h, m);
-    m.point(target(hnew, m)) = mid;
-    std::vector<E> touched = { edge(hnew, m), edge(h, m) };
-    for(const H side : { hnew, opposite(h, m) })
+    if(num_vertices(out) >= max_vertices)
     {
-      if(is_border(side, m)) continue;
-      const F old_face = face(side, m);
+      r.vertex_limit_reached = true;
+      break;
+    }
+    const H h = internal::split_halfedge(e, out);
+    const Point mid = CGAL::midpoint(get(ovpm, source(h, out)), get(ovpm, target(h, out)));
+    // split_edge: hnew runs from the old source to the new vertex, followed by h
+    const H hnew = CGAL::Euler::split_edge(h, out);
+    put(ovpm, target(hnew, out), mid);
+    std::vector<E> touched = { edge(hnew, out), edge(h, out) };
+    id_of(edge(hnew, out));   // one of the two edges is new: it gets the next id
+    id_of(edge(h, out));
+    for(const H side : { hnew, opposite(h, out) })
+    {
+      if(is_border(side, out)) continue;
+      const F old_face = face(side, out);
       // the face is now a quad: connect the new vertex to the opposite corner
-      const H to_new = (target(side, m) == target(hnew, m)) ? side : opposite(hnew, m);
-      const H to_corner = next(next(to_new, m), m);
-      const H diagonal = CGAL::Euler::split_face(to_new, to_corner, m);
-      r.input_face[face(diagonal, m)] = r.input_face[old_face];
-      r.input_face[face(opposite(diagonal, m), m)] = r.input_face[old_face];
-      touched.push_back(edge(diagonal, m));
+      const H to_new = (target(side, out) == target(hnew, out)) ? side : opposite(hnew, out);
+      const H to_corner = next(next(to_new, out), out);
+      const H diagonal = CGAL::Euler::split_face(to_new, to_corner, out);
+      put(input_face, face(diagonal, out), get(input_face, old_face));
+      put(input_face, face(opposite(diagonal, out), out), get(input_face, old_face));
+      touched.push_back(edge(diagonal, out));
+      id_of(edge(diagonal, out));
     }
     ++r.edges_split;
     // Only edges shorter than the one split go on: splitting the longest edge of a face
     // always gives shorter ones, so a diagonal as long as the split edge means a sliver
     // on the other side (a CAD mesh's needle), whose refinement would never end.
     for(E t : touched)
-      if(length2(t) > limit2 && length2(t) < top.first) queue.push(Item(length2(t), std::size_t(t)));
+      if(length2(t) > limit2 && length2(t) < top.first) queue.push(Item(length2(t), id_of(t)));
+  }
+
+  if(!CGAL::parameters::is_default_parameter<NamedParametersOut, internal_np::input_face_map_t>::value)
+  {
+    auto user_map = choose_parameter(get_parameter(np_out, internal_np::input_face_map), CGAL::Constant_property_map<F, Input_face>());
+    for(F f : faces(out)) put(user_map, f, get(input_face, f));
   }
 
   // the sites: each lies in one of the pieces of its input face
   std::vector<std::vector<F> > pieces(f2f.size());
+  auto copy_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  for(std::size_t k = 0; k < f2f.size(); ++k) put(copy_index, f2f[k].first, k);
+  for(F f : faces(out)) pieces[get(copy_index, get(input_face, f))].push_back(f);
+  const auto dvpm = internal::make_double_point_map(vpm);
+  for(const auto& s : sites)
   {
-    auto copy_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
-    for(std::size_t k = 0; k < f2f.size(); ++k) put(copy_index, f2f[k].first, k);
-    for(F f : faces(m)) pieces[get(copy_index, r.input_face[f])].push_back(f);
-    for(const auto& s : sites)
+    const internal::Point_d p = CGAL::Polygon_mesh_processing::construct_point(
+        s, tm, CGAL::parameters::vertex_point_map(dvpm).geom_traits(internal::Double_kernel()));
+    F best = GT::null_face();
+    std::array<double, 3> best_b = {{ 1., 0., 0. }};
+    double best_min = -std::numeric_limits<double>::infinity();
+    for(F f : pieces[get(copy_index, s.first)])
     {
-      const Point_3 p = CGAL::Polygon_mesh_processing::construct_point(s, tm, CGAL::parameters::vertex_point_map(vpm));
-      F best;
-      std::array<double, 3> best_b = {{ 1., 0., 0. }};
-      double best_min = -std::numeric_limits<double>::infinity();
-      for(F f : pieces[get(copy_index, s.first)])
+      const H h = halfedge(f, out);
+      const std::array<double, 3> b = internal::barycentric_coordinates(
+          internal::to_point_d(get(ovpm, source(h, out))), internal::to_point_d(get(ovpm, target(h, out))),
+          internal::to_point_d(get(ovpm, target(next(h, out), out))), p);
+      const double lo = (std::min)((std::min)(b[0], b[1]), b[2]);
+      if(lo > best_min)
       {
-        const auto b = CGAL::Polygon_mesh_processing::barycentric_coordinates(
-            m.point(source(halfedge(f, m), m)), m.point(target(halfedge(f, m), m)),
-            m.point(target(next(halfedge(f, m), m), m)), p);
-        const double lo = (std::min)((std::min)(CGAL::to_double(b[0]), CGAL::to_double(b[1])), CGAL::to_double(b[2]));
-        if(lo > best_min)
-        {
-          best_min = lo;
-          best = f;
-          best_b = {{ CGAL::to_double(b[0]), CGAL::to_double(b[1]), CGAL::to_double(b[2]) }};
-        }
+        best_min = lo;
+        best = f;
+        best_b = b;
       }
-      // rounding may leave a coordinate a few ulps below zero: clamp and renormalize
-      double sum = 0;
-      for(double& c : best_b) { c = (std::max)(c, 0.); sum += c; }
-      for(double& c : best_b) c /= sum;
-      r.sites.emplace_back(best, best_b);
     }
+    // rounding may leave a coordinate a few ulps below zero: clamp and renormalize
+    double sum = 0;
+    for(double& c : best_b) { c = (std::max)(c, 0.); sum += c; }
+    for(double& c : best_b) c /= sum;
+    r.sites.emplace_back(best, best_b);
   }
   return r;
 }
 
+CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
+
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated What the deprecated `refine_for_sites()` overload returns.
+template <class TriangleMesh, class Point_3>
+struct Refinement_result
+{
+  /// the refined mesh
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  /// a location on it
+  typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
+  /// the refined mesh
+  Mesh mesh;
+  /// the sites on `mesh`
+  std::vector<Location> sites;
+  /// for each face of `mesh`, the input face that contains it
+  typename Mesh::template Property_map<typename Mesh::Face_index,
+                                       typename boost::graph_traits<TriangleMesh>::face_descriptor> input_face;
+  /// the length edges are split down to
+  double target_edge_length = 0;
+  /// the number of edges split
+  std::size_t edges_split = 0;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated Use `refine_for_sites(tm, sites, out, np_in, np_out)`, which writes into a
+/// mesh of the caller's type. Throws `Input_error` when the vertex limit is reached.
+template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL_DEPRECATED_MSG("use refine_for_sites(tm, sites, out, np_in, np_out)")
+Refinement_result<TriangleMesh,
+                  typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
+refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, const Refinement_options& options = Refinement_options(),
+                 const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type Point_3;
+  typedef Refinement_result<TriangleMesh, Point_3> Result;
+  Result r;
+  r.input_face = r.mesh.template add_property_map<typename Result::Mesh::Face_index,
+                   typename boost::graph_traits<TriangleMesh>::face_descriptor>("f:svd_input_face").first;
+  namespace SVp = Surface_voronoi::parameters;
+  const Refined_sites<typename Result::Mesh> refined = refine_for_sites(tm, sites, r.mesh,
+      SVp::refinement_trigger_ratio(options.trigger_ratio, SVp::refinement_edge_length_ratio(options.edge_length_ratio,
+      SVp::refinement_max_vertices(options.max_vertices, np))),
+      SVp::input_face_map(r.input_face));
+  if(refined.vertex_limit_reached)
+    throw Input_error("refine_for_sites: the refined mesh would exceed " + std::to_string(options.max_vertices) + " vertices");
+  r.sites = refined.sites;
+  r.target_edge_length = refined.target_edge_length;
+  r.edges_split = refined.edges_split;
+  return r;
+}
+CGAL_SURFACE_VORONOI_DEPRECATED_END
+
+
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_REFINEMENT_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Site sampling: area-uniform random points, and blue noise by weighted sample elimination
 // (Yuksel 2015): draw 5N area-uniform candidates, then repeatedly remove the one most crowded
@@ -8,16 +16,19 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SAMPLING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_SAMPLING_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <CGAL/assertions.h>
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Random.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
@@ -29,20 +40,43 @@ namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// `n` area-uniform random face locations of `tm`, drawn with `CGAL::Random(seed)`.
-template <class TriangleMesh>
+/// `n` area-uniform random face locations of `tm`.
+///
+/// \param tm a triangle mesh with at least one face
+/// \param n the number of locations
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{the seed of the `CGAL::Random` generator: the same seed gives the same locations}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
-random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed = 0)
+random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
-  CGAL::Random rng(seed);
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  CGAL::Random rng(choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u));
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
-  if(fs.empty()) throw Input_error("the mesh is empty (no faces)");
+  CGAL_precondition_msg(!fs.empty(), "the mesh is empty (no faces)");
   std::vector<double> cumulative;
+  cumulative.reserve(fs.size());
   double total = 0;
   for(auto f : fs)
   {
-    total += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm));
+    const auto h = halfedge(f, tm);
+    total += internal::triangle_area(internal::to_point_d(get(vpm, source(h, tm))), internal::to_point_d(get(vpm, target(h, tm))),
+                                     internal::to_point_d(get(vpm, target(next(h, tm), tm))));
     cumulative.push_back(total);
   }
   std::vector<Location> out;
@@ -57,27 +91,44 @@ random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed = 0)
   return out;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramSites
-/// `n` blue-noise face locations of `tm` by weighted sample elimination over `5 n` random
-/// candidates (straight-line distances between candidates). Deterministic for a seed.
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated use `random_sites(tm, n, CGAL::parameters::random_seed(seed))`
 template <class TriangleMesh>
+CGAL_DEPRECATED_MSG("use the named parameter random_seed")
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
-blue_noise_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed = 0)
+random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
+{
+  return random_sites(tm, n, CGAL::parameters::random_seed(seed));
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
+/// `n` blue-noise face locations of `tm` by weighted sample elimination over `5 n`
+/// area-uniform candidates (straight-line distances between candidates). Named parameters
+/// as for `random_sites()`; the same seed gives the same locations.
+template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
+blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
-  if(n == 0) return std::vector<Location>();
-  const std::vector<Location> candidates = random_sites(tm, 5 * n, seed);
-  const std::size_t m = candidates.size();
-  typedef CGAL::Simple_cartesian<double> K;
+  typedef internal::Double_kernel K;
   typedef K::Point_3 P;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(n == 0) return std::vector<Location>();
+  const auto vpm = internal::make_double_point_map(
+      choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)));
+  const std::vector<Location> candidates = random_sites(tm, 5 * n, np);
+  const std::size_t m = candidates.size();
   std::vector<P> points;
   points.reserve(m);
-  for(const Location& l : candidates)
+  double area = 0;
+  for(auto f : faces(tm))
   {
-    const auto p = CGAL::Polygon_mesh_processing::construct_point(l, tm);
-    points.push_back(P(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    const auto h = halfedge(f, tm);
+    area += internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
   }
-  const double area = CGAL::to_double(CGAL::Polygon_mesh_processing::area(tm));
+  for(const Location& l : candidates)
+    points.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(K())));
   // the largest radius of n disks packed on the area (hexagonal packing), as in Yuksel 2015
   const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n)));
   const double reach = 2 * r_max;
@@ -134,7 +185,17 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed = 0)
   return out;
 }
 
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated use `blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed))`
+template <class TriangleMesh>
+CGAL_DEPRECATED_MSG("use the named parameter random_seed")
+std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
+blue_noise_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
+{
+  return blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed));
+}
+
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_SAMPLING_H

@@ -1,7 +1,15 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// Site insertion, the paper's mode (section 3.1): every site becomes a vertex of a working
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Site insertion, the paper's mode (\cgalCite{cgal:xwz-svdm-22}, section 3.1): every site becomes a vertex of a working
 // copy of the mesh, and each face holding sites is re-triangulated (Delaunay inside the
 // face, the face's edges kept), so that the embedding is computed on the augmented mesh.
 // A site on an edge splits the edge (no perturbation is needed); a site at a vertex is
@@ -10,10 +18,12 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/working_copy.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -68,7 +78,7 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
   typedef typename Mesh::Face_index F;
   typedef typename Mesh::Halfedge_index H;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Input_face;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+  typedef internal::Exact_predicates_kernel EK;
 
   VPM vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                get_const_property_map(CGAL::vertex_point, tm));
@@ -90,25 +100,18 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
   auto frame_of = [&](std::size_t k) {
     const F f = f2f[k].second;
     const H h = halfedge(f, m);
-    const Point_3 a = m.point(source(h, m)), b = m.point(target(h, m)), c = m.point(target(next(h, m), m));
-    std::array<std::array<double, 3>, 3> fr;   // origin, u, w
-    const double A[3] = { CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z()) };
-    double u[3] = { CGAL::to_double(b.x()) - A[0], CGAL::to_double(b.y()) - A[1], CGAL::to_double(b.z()) - A[2] };
-    const double v[3] = { CGAL::to_double(c.x()) - A[0], CGAL::to_double(c.y()) - A[1], CGAL::to_double(c.z()) - A[2] };
-    const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for(double& x : u) x /= lu;
-    double nrm[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
-    const double ln = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
-    for(double& x : nrm) x /= ln;
-    const double w[3] = { nrm[1] * u[2] - nrm[2] * u[1], nrm[2] * u[0] - nrm[0] * u[2], nrm[0] * u[1] - nrm[1] * u[0] };
-    fr[0] = { A[0], A[1], A[2] };
-    fr[1] = { u[0], u[1], u[2] };
-    fr[2] = { w[0], w[1], w[2] };
-    return fr;
+    const internal::Point_d a = internal::to_point_d(m.point(source(h, m)));
+    const internal::Vector_d u = internal::to_point_d(m.point(target(h, m))) - a;
+    const internal::Vector_d v = internal::to_point_d(m.point(target(next(h, m), m))) - a;
+    const internal::Vector_d x = u / std::sqrt(u.squared_length());
+    internal::Vector_d normal = CGAL::cross_product(x, v);
+    normal = normal / std::sqrt(normal.squared_length());
+    return std::make_pair(a, std::make_pair(x, CGAL::cross_product(normal, x)));   // origin, in-plane axes
   };
-  auto to_2d = [&](const std::array<std::array<double, 3>, 3>& fr, const Point_3& p) {
-    const double d[3] = { CGAL::to_double(p.x()) - fr[0][0], CGAL::to_double(p.y()) - fr[0][1], CGAL::to_double(p.z()) - fr[0][2] };
-    return EK::Point_2(d[0] * fr[1][0] + d[1] * fr[1][1] + d[2] * fr[1][2], d[0] * fr[2][0] + d[1] * fr[2][1] + d[2] * fr[2][2]);
+  typedef decltype(frame_of(0)) Frame;
+  auto to_2d = [&](const Frame& fr, const Point_3& p) {
+    const internal::Vector_d d = internal::to_point_d(p) - fr.first;
+    return EK::Point_2(d * fr.second.first, d * fr.second.second);
   };
 
   // Lawson flips around a new vertex; edges between two input faces (and borders) are kept.
@@ -151,10 +154,8 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
       throw Input_error("site " + std::to_string(index) + " is not on a face of the mesh");
     const std::size_t k = it->second;
     Point_3 p = CGAL::Polygon_mesh_processing::construct_point(loc, tm, CGAL::parameters::vertex_point_map(vpm));
-    const auto fr = frame_of(k);
-    const EK::Point_2 q = to_2d(fr, p);
 
-    // the sub-face that contains q best (largest smallest barycentric coordinate)
+    // the sub-face that contains the site best (largest smallest barycentric coordinate)
     F best = F();
     std::array<double, 3> best_b = {{ -1e300, 0, 0 }};
     std::array<H, 3> best_h;
@@ -162,12 +163,9 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
     {
       const H h0 = halfedge(f, m);
       const std::array<H, 3> hs = {{ h0, next(h0, m), next(next(h0, m), m) }};
-      std::array<EK::Point_2, 3> c;
-      for(int j = 0; j < 3; ++j) c[j] = to_2d(fr, m.point(source(hs[j], m)));
-      const double area = CGAL::to_double(CGAL::area(c[0], c[1], c[2]));
-      std::array<double, 3> b;
-      for(int j = 0; j < 3; ++j)
-        b[j] = CGAL::to_double(CGAL::area(q, c[(j + 1) % 3], c[(j + 2) % 3])) / area;
+      const std::array<double, 3> b = internal::barycentric_coordinates(
+          internal::to_point_d(m.point(source(hs[0], m))), internal::to_point_d(m.point(source(hs[1], m))),
+          internal::to_point_d(m.point(source(hs[2], m))), internal::to_point_d(p));
       if((std::min)((std::min)(b[0], b[1]), b[2]) > (std::min)((std::min)(best_b[0], best_b[1]), best_b[2]))
       {
         best = f; best_b = b; best_h = hs;
@@ -234,4 +232,4 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_SITE_INSERTION_H

@@ -1,15 +1,28 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
 //
-// A compact, index-based copy of a triangle mesh's connectivity and geometry. Every
-// stage of the pipeline works on it, so that propagation and cutting run on flat arrays
-// whatever the user's FaceGraph is (Surface_mesh, Polyhedron_3, ...).
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// A compact, index-based copy of a triangle mesh's connectivity and geometry (in doubles).
+// Every stage works on it, so that propagation and cutting run on flat arrays whatever the
+// user's FaceGraph is. It is built once and shared (std::shared_ptr) by the diagram and the
+// metric built on the same mesh.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INDEXED_MESH_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INDEXED_MESH_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -17,11 +30,10 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
-#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -38,9 +50,10 @@ struct Indexed_mesh
 
   static constexpr std::size_t none = std::size_t(-1);
 
+  const TriangleMesh* source_mesh = nullptr;                     // the mesh this is a copy of
   std::vector<vertex_descriptor> vertex_handles;                 // index -> descriptor
   std::vector<face_descriptor> face_handles;
-  std::vector<std::array<double, 3> > points;
+  std::vector<Point_d> points;
   std::vector<std::array<std::size_t, 3> > triangles;            // corners, counter-clockwise
   // Local edge k of a face joins corners k and k+1; its neighbour across, or `none` on a border.
   std::vector<std::array<std::size_t, 3> > neighbors;
@@ -65,24 +78,22 @@ struct Indexed_mesh
     build(tm, vpm);
   }
 
+  /// \pre `tm` is a valid triangle mesh with at least one face
   template <class VertexPointMap>
   void build(const TriangleMesh& tm, VertexPointMap vpm)
   {
+    source_mesh = &tm;
     vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
     face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    vertex_handles.reserve(num_vertices(tm));
+    points.reserve(num_vertices(tm));
     for(vertex_descriptor v : vertices(tm))
     {
       put(vertex_index, v, vertex_handles.size());
       vertex_handles.push_back(v);
-      const auto& p = get(vpm, v);
-      const std::array<double, 3> q = { CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) };
-      for(double c : q)
-        if(!std::isfinite(c))
-          throw Input_error("vertex " + std::to_string(points.size()) + " has a non-finite coordinate");
-      points.push_back(q);
+      points.push_back(to_point_d(get(vpm, v)));
     }
-    if(faces(tm).empty())
-      throw Input_error("the mesh is empty (no faces)");
+    face_handles.reserve(num_faces(tm));
     for(face_descriptor f : faces(tm))
     {
       put(face_index, f, face_handles.size());
@@ -94,35 +105,22 @@ struct Indexed_mesh
     neighbors.assign(nf, std::array<std::size_t, 3>{ none, none, none });
     edges.resize(nf);
     face_areas.resize(nf);
-    std::vector<std::size_t> vertex_degree(points.size(), 0);
     for(std::size_t fi = 0; fi < nf; ++fi)
     {
-      const halfedge_descriptor h0 = halfedge(face_handles[fi], tm);
-      halfedge_descriptor h = h0;
+      halfedge_descriptor h = halfedge(face_handles[fi], tm);
       for(int k = 0; k < 3; ++k)
       {
         // corner k = source of local edge k
         triangles[fi][k] = get(vertex_index, source(h, tm));
-        h = next(h, tm);
-      }
-      if(h != h0)
-        throw Input_error("face " + std::to_string(fi) + " is not a triangle");
-      for(int k = 0; k < 3; ++k)
-      {
         const halfedge_descriptor opp = opposite(h, tm);
         if(!is_border(opp, tm))
           neighbors[fi][k] = get(face_index, face(opp, tm));
         h = next(h, tm);
-        ++vertex_degree[triangles[fi][k]];
       }
+      CGAL_precondition_msg(h == halfedge(face_handles[fi], tm), "every face must be a triangle");
       face_areas[fi] = triangle_area(fi);
-      if(!(face_areas[fi] > 0))
-        throw Input_error("face " + std::to_string(fi) + " has zero area");
       total_area += face_areas[fi];
     }
-    for(std::size_t v = 0; v < points.size(); ++v)
-      if(vertex_degree[v] == 0)
-        throw Input_error("vertex " + std::to_string(v) + " belongs to no face");
 
     // Global edge ids: the face with the smaller index names the edge first.
     for(std::size_t fi = 0; fi < nf; ++fi)
@@ -136,8 +134,7 @@ struct Indexed_mesh
           for(int l = 0; l < 3; ++l)
             if(triangles[g][l] == b && triangles[g][(l + 1) % 3] == a && neighbors[g][l] == fi)
               kg = l;
-          if(kg < 0)
-            throw Input_error("faces " + std::to_string(g) + " and " + std::to_string(fi) + " are inconsistently connected");
+          CGAL_assertion(kg >= 0);   // a valid halfedge structure pairs the two faces
           edges[fi][k] = edges[g][kg];
         }
         else
@@ -156,50 +153,46 @@ struct Indexed_mesh
   std::size_t number_of_faces() const { return triangles.size(); }
   std::size_t number_of_edges() const { return edge_vertices.size(); }
 
+  const Point_d& corner(std::size_t f, int k) const { return points[triangles[f][k]]; }
+
   double triangle_area(std::size_t f) const
   {
-    const std::array<double, 3>& p = points[triangles[f][0]];
-    const std::array<double, 3>& q = points[triangles[f][1]];
-    const std::array<double, 3>& r = points[triangles[f][2]];
-    const double a[3] = { q[0] - p[0], q[1] - p[1], q[2] - p[2] };
-    const double b[3] = { r[0] - p[0], r[1] - p[1], r[2] - p[2] };
-    const double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-    return 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    return internal::triangle_area(corner(f, 0), corner(f, 1), corner(f, 2));
   }
 
-  std::array<double, 3> point_at(std::size_t f, const std::array<double, 3>& b) const
+  Point_d point_at(std::size_t f, const Barycentric& b) const
   {
-    std::array<double, 3> r = { 0, 0, 0 };
+    return internal::point_at(corner(f, 0), corner(f, 1), corner(f, 2), b);
+  }
+
+  Barycentric barycentric_coordinates(std::size_t f, const Point_d& x) const
+  {
+    return internal::barycentric_coordinates(corner(f, 0), corner(f, 1), corner(f, 2), x);
+  }
+
+  /// the local index (0, 1, 2) of vertex `v` in face `f`, or -1
+  int corner_of(std::size_t f, std::size_t v) const
+  {
     for(int k = 0; k < 3; ++k)
-      for(int c = 0; c < 3; ++c)
-        r[c] += b[k] * points[triangles[f][k]][c];
-    return r;
+      if(triangles[f][k] == v) return k;
+    return -1;
   }
 
 private:
   void compute_components()
   {
+    // Components are connected through edges and through vertices (faces sharing only a
+    // vertex are one surface for the Laplacian).
+    Disjoint_sets sets(points.size());
+    for(const auto& t : triangles)
+      for(int k = 1; k < 3; ++k) sets.unite(t[0], t[k]);
     const std::size_t nf = triangles.size();
     face_component.assign(nf, none);
     number_of_components = 0;
-    // Components are connected through edges and through vertices (faces sharing only a
-    // vertex are one surface for the Laplacian).
-    std::vector<std::size_t> parent(points.size());
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    auto find = [&](std::size_t x) {
-      while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-      return x;
-    };
-    for(const auto& t : triangles)
-      for(int k = 1; k < 3; ++k)
-      {
-        const std::size_t a = find(t[0]), b = find(t[k]);
-        if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-      }
     std::vector<std::size_t> root_id(points.size(), none);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      const std::size_t r = find(triangles[f][0]);
+      const std::size_t r = sets.find(triangles[f][0]);
       if(root_id[r] == none) root_id[r] = number_of_components++;
       face_component[f] = root_id[r];
     }
@@ -207,11 +200,13 @@ private:
 
   void compute_bbox()
   {
-    std::array<double, 3> lo = points.front(), hi = points.front();
-    for(const auto& p : points)
-      for(int c = 0; c < 3; ++c) { lo[c] = (std::min)(lo[c], p[c]); hi[c] = (std::max)(hi[c], p[c]); }
+    if(points.empty()) return;
+    Point_d lo = points.front(), hi = points.front();
+    double l[3] = { lo[0], lo[1], lo[2] }, u[3] = { hi[0], hi[1], hi[2] };
+    for(const Point_d& p : points)
+      for(int c = 0; c < 3; ++c) { l[c] = (std::min)(l[c], p[c]); u[c] = (std::max)(u[c], p[c]); }
     double s = 0;
-    for(int c = 0; c < 3; ++c) s += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    for(int c = 0; c < 3; ++c) s += (u[c] - l[c]) * (u[c] - l[c]);
     bbox_diagonal = std::sqrt(s);
   }
 };
@@ -220,4 +215,4 @@ private:
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INDEXED_MESH_H

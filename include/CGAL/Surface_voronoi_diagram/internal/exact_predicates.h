@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // The signs that decide the combinatorics of the per-face lower envelope. Inputs are the
 // doubles D_i(v) at the face's corners, taken as exact; each sign is first evaluated in
@@ -10,23 +18,31 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_EXACT_PREDICATES_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_EXACT_PREDICATES_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Exact_rational.h>
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-typedef CGAL::Exact_rational Exact;
+typedef CGAL::Exact_rational Exact_number;
 
 inline int sign_of(double x) { return (x > 0) - (x < 0); }
-inline int sign_of(const Exact& x) { return CGAL::sign(x); }
+inline int sign_of(const Exact_number& x) { return CGAL::sign(x); }
 
-// A generous multiple of the unit roundoff for the short expressions below: every input is
-// a difference of two doubles (one rounding), then at most three products and five sums.
+// A static filter: a generous multiple of the unit roundoff for the short expressions below
+// (every input is a difference of two doubles, one rounding, then at most three products and
+// five sums). It decides almost every sign in a few flops, where an interval filter would
+// change the rounding mode around each evaluation; the rest go to exact rationals.
 constexpr double predicate_error_factor = 32 * 1.1102230246251565e-16;
+// Products of tiny numbers lose absolute precision (subnormals), which a relative bound
+// misses: a few subnormal units more cover it.
+constexpr double predicate_error_floor = 64 * std::numeric_limits<double>::denorm_min();
 
 /// sign(A*D - B*C) with A = a1-a2, B = b1-b2, C = c1-c2, D = d1-d2.
 inline int sign_of_det2_of_differences(double a1, double a2, double b1, double b2,
@@ -34,11 +50,11 @@ inline int sign_of_det2_of_differences(double a1, double a2, double b1, double b
 {
   const double A = a1 - a2, B = b1 - b2, C = c1 - c2, D = d1 - d2;
   const double det = A * D - B * C;
-  const double bound = predicate_error_factor * (std::abs(A * D) + std::abs(B * C));
+  const double bound = predicate_error_factor * (std::abs(A * D) + std::abs(B * C)) + predicate_error_floor;
   if(det > bound) return 1;
   if(det < -bound) return -1;
-  const Exact eA = Exact(a1) - Exact(a2), eB = Exact(b1) - Exact(b2);
-  const Exact eC = Exact(c1) - Exact(c2), eD = Exact(d1) - Exact(d2);
+  const Exact_number eA = Exact_number(a1) - Exact_number(a2), eB = Exact_number(b1) - Exact_number(b2);
+  const Exact_number eC = Exact_number(c1) - Exact_number(c2), eD = Exact_number(d1) - Exact_number(d2);
   return sign_of(eA * eD - eB * eC);
 }
 
@@ -77,15 +93,15 @@ inline int sign_of_det3_of_differences(const Difference_row& r0, const Differenc
     m[2][k] = r2 ? r2->p[k] - r2->q[k] : 1.0;
   }
   const double det = det3_rows(m);
-  const double bound = 2 * predicate_error_factor * permanent3_abs(m);
+  const double bound = 2 * predicate_error_factor * permanent3_abs(m) + predicate_error_floor;
   if(det > bound) return 1;
   if(det < -bound) return -1;
-  std::array<std::array<Exact, 3>, 3> e;
+  std::array<std::array<Exact_number, 3>, 3> e;
   for(int k = 0; k < 3; ++k)
   {
-    e[0][k] = Exact(r0.p[k]) - Exact(r0.q[k]);
-    e[1][k] = Exact(r1.p[k]) - Exact(r1.q[k]);
-    e[2][k] = r2 ? Exact(r2->p[k]) - Exact(r2->q[k]) : Exact(1);
+    e[0][k] = Exact_number(r0.p[k]) - Exact_number(r0.q[k]);
+    e[1][k] = Exact_number(r1.p[k]) - Exact_number(r1.q[k]);
+    e[2][k] = r2 ? Exact_number(r2->p[k]) - Exact_number(r2->q[k]) : Exact_number(1);
   }
   return sign_of(det3_rows(e));
 }
@@ -94,4 +110,4 @@ inline int sign_of_det3_of_differences(const Difference_row& r0, const Differenc
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_EXACT_PREDICATES_H

@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Candidate selection of the restricted Voronoi diagram baseline (RVD): every site that is
 // the nearest one (in the embedding) somewhere in the face, with no propagation. Cutting
@@ -8,15 +16,17 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_GLOBAL_NEAREST_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_GLOBAL_NEAREST_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/internal/propagation.h>
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
 #include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
@@ -32,14 +42,14 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
                                const Fields& fields,
                                std::size_t number_of_sites,
                                bool has_weights,
-                               std::vector<std::vector<Face_field> >& candidates)
+                               Candidate_lists& candidates)
 {
   const std::size_t nf = mesh.number_of_faces();
   const std::size_t d = fields.dimension();
-  candidates.assign(nf, std::vector<Face_field>());
+  candidates.assign(nf, std::vector<Candidate>());
 
   auto add = [&](std::size_t f, std::size_t site) {
-    Face_field x;
+    Candidate x;
     x.site = static_cast<std::uint32_t>(site);
     for(int k = 0; k < 3; ++k) x.value[k] = fields.value(site, mesh.triangles[f][k]);
     candidates[f].push_back(x);
@@ -47,7 +57,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
 
   if(d == 3 && !has_weights)
   {
-    typedef CGAL::Simple_cartesian<double> K;
+    typedef Double_kernel K;
     typedef K::Point_3 P;
     std::vector<P> site_points(number_of_sites);
     for(std::size_t i = 0; i < number_of_sites; ++i)
@@ -109,7 +119,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
       for(std::size_t s = 0; s < number_of_sites; ++s) add(f, s);
   }
 
-  for(std::vector<Face_field>& list : candidates)
+  for(std::vector<Candidate>& list : candidates)
     clean_candidate_list(list);
 }
 
@@ -117,4 +127,4 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_GLOBAL_NEAREST_H

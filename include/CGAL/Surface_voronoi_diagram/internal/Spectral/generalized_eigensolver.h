@@ -1,20 +1,35 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Smallest eigenpairs of L phi = lambda M phi (L symmetric positive semi-definite,
-// M diagonal positive) by Spectra's shift-invert Lanczos with a factorization we choose.
+// M diagonal positive) by Spectra's shift-invert Lanczos, factorizing with a model of
+// SparseLinearAlgebraWithFactorTraits_d (as Heat_method_3 does), and with a way to cancel.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+
+#include <CGAL/assertions.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <CGAL/Eigen_solver_traits.h>
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -23,6 +38,11 @@
 namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
+
+/// Thrown through Spectra by the operator when the caller's progress callback asks to stop
+/// (Spectra has no other way out of a running solve); caught in the embedding, never seen
+/// by users.
+struct Eigen_solve_cancelled {};
 
 /// The operator y = (A - sigma B)^{-1} x that Spectra's shift-invert mode needs, minus the
 /// eigenpairs already found. Spectra's own `SymShiftInvert` factorizes with SparseLU; a
@@ -34,14 +54,16 @@ namespace internal {
 /// silently missed. Spectra applies this operator to x = B v; subtracting
 /// sum_k phi_k phi_k^T x / (lambda_k - sigma) maps the found eigenpairs to 0 so that a
 /// further run finds the missing ones.
-template <class SparseSolver>
+template <class LA>
 class Shift_invert_operator
 {
 public:
   typedef double Scalar;
 
-  Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B)
-    : m_A(A), m_B(B)
+  Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B,
+                        const std::function<bool()>& keep_going)
+    : m_A(A), m_B(B), m_keep_going(keep_going), m_matrix(static_cast<int>(A.rows())),
+      m_x(static_cast<std::size_t>(A.rows())), m_y(static_cast<std::size_t>(A.rows()))
   {}
 
   Eigen::Index rows() const { return m_A.rows(); }
@@ -51,9 +73,13 @@ public:
   {
     if(m_factorized && sigma == m_sigma)
       return;
-    Eigen::SparseMatrix<double> C = m_A - sigma * m_B;
-    m_solver.compute(C);
-    if(m_solver.info() != Eigen::Success)
+    const Eigen::SparseMatrix<double> C = m_A - sigma * m_B;
+    m_matrix = typename LA::Matrix(static_cast<int>(C.rows()));
+    for(Eigen::Index col = 0; col < C.outerSize(); ++col)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it)
+        m_matrix.set_coef(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value(), true);
+    double denominator = 1;
+    if(!m_la.factor(m_matrix, denominator))
       throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
     m_sigma = sigma;
     m_factorized = true;
@@ -67,11 +93,16 @@ public:
 
   void perform_op(const Scalar* x, Scalar* y) const
   {
-    Eigen::Map<const Eigen::VectorXd> xv(x, rows());
-    Eigen::Map<Eigen::VectorXd> yv(y, rows());
-    yv.noalias() = m_solver.solve(xv);
+    if(m_keep_going && !m_keep_going()) throw Eigen_solve_cancelled();
+    const Eigen::Index n = rows();
+    for(Eigen::Index i = 0; i < n; ++i) m_x[static_cast<int>(i)] = x[i];
+    if(!m_la.linear_solver(m_x, m_y))
+      throw Numerical_error("the solve with the factorization of L - sigma M failed");
+    for(Eigen::Index i = 0; i < n; ++i) y[i] = m_y[static_cast<int>(i)];
     if(m_deflation_vectors.cols() > 0)
     {
+      Eigen::Map<const Eigen::VectorXd> xv(x, n);
+      Eigen::Map<Eigen::VectorXd> yv(y, n);
       const Eigen::VectorXd c = (m_deflation_vectors.transpose() * xv).cwiseProduct(m_deflation_weights);
       yv.noalias() -= m_deflation_vectors * c;
     }
@@ -80,12 +111,18 @@ public:
 private:
   const Eigen::SparseMatrix<double>& m_A;
   const Eigen::SparseMatrix<double>& m_B;
-  SparseSolver m_solver;
+  std::function<bool()> m_keep_going;
+  mutable LA m_la;
+  typename LA::Matrix m_matrix;   // the factorization refers to it: kept alive here
+  mutable typename LA::Vector m_x, m_y;
   double m_sigma = 0;
   bool m_factorized = false;
   Eigen::MatrixXd m_deflation_vectors;
   Eigen::VectorXd m_deflation_weights;
 };
+
+/// The default linear algebra: Eigen's simplicial LDLT.
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_eigen_LA;
 
 struct Eigen_solve_result
 {
@@ -99,17 +136,18 @@ struct Eigen_solve_result
 /// Computes the `nev` smallest eigenpairs. The shift is negative and scaled to the mesh
 /// (eigenvalues scale as 1/size^2), so L - sigma M is positive definite; a shift of
 /// exactly 0 factorizes a singular matrix and returns garbage without complaint.
-template <class SparseSolver = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > >
+/// `keep_going`, if set, is asked before every application of the operator; returning
+/// false throws `Eigen_solve_cancelled`.
+template <class LA = Default_eigen_LA>
 Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
                                                    const Eigen::SparseMatrix<double>& M,
                                                    Eigen::Index nev,
                                                    double tolerance = 1e-10,
-                                                   Eigen::Index max_iterations = 1000)
+                                                   Eigen::Index max_iterations = 1000,
+                                                   const std::function<bool()>& keep_going = std::function<bool()>())
 {
   const Eigen::Index n = L.rows();
-  if(nev < 1 || nev >= n)
-    throw Input_error("the mesh has " + std::to_string(n) + " vertices: too few for "
-                      + std::to_string(nev) + " eigenpairs (need more vertices than eigenpairs)");
+  CGAL_precondition_msg(nev >= 1 && nev < n, "more vertices than eigenpairs are needed");
 
   const double mean_l = L.diagonal().mean();
   const double mean_m = M.diagonal().mean();
@@ -117,9 +155,9 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     throw Numerical_error("the Laplacian or mass matrix is degenerate (zero diagonal)");
   const double sigma = -1e-6 * mean_l / mean_m;
 
-  typedef Shift_invert_operator<SparseSolver> Op;
+  typedef Shift_invert_operator<LA> Op;
   typedef Spectra::SparseSymMatProd<double> BOp;
-  Op op(L, M);
+  Op op(L, M, keep_going);
   BOp bop(M);
   op.set_shift(sigma);
 
@@ -215,4 +253,4 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H

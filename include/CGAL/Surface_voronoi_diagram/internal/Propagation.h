@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Propagation (SurfaceVoronoi, stage 1): for every face, the sites whose distance field can
 // win somewhere in it. A site's field enters a face only from a face where it was admitted,
@@ -8,6 +16,10 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PROPAGATION_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PROPAGATION_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 
 #include <algorithm>
@@ -20,47 +32,6 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-/// A site's field on one face: its values D at the three corners.
-struct Face_field
-{
-  std::uint32_t site;
-  std::array<double, 3> value;
-};
-
-/// (value, site) compared lexicographically: ties go to the lower site index everywhere,
-/// which is the symbolic perturbation that makes both sides of every edge agree.
-inline bool lexicographically_less(double a, std::uint32_t i, double b, std::uint32_t j)
-{
-  return a < b || (a == b && i < j);
-}
-
-inline bool dominates(const Face_field& b, const Face_field& x)
-{
-  for(int k = 0; k < 3; ++k)
-    if(!lexicographically_less(b.value[k], b.site, x.value[k], x.site))
-      return false;
-  return true;
-}
-
-/// Drops the fields dominated by another one (they cannot win any area) and sorts by site,
-/// so that cutting does not depend on the order in which fields arrived.
-inline void clean_candidate_list(std::vector<Face_field>& list)
-{
-  if(list.size() > 1)
-  {
-    std::size_t kept = 0;
-    for(std::size_t a = 0; a < list.size(); ++a)
-    {
-      bool dominated = false;
-      for(std::size_t b = 0; b < list.size() && !dominated; ++b)
-        dominated = (b != a) && dominates(list[b], list[a]);
-      if(!dominated) list[kept++] = list[a];
-    }
-    list.resize(kept);
-    std::sort(list.begin(), list.end(), [](const Face_field& a, const Face_field& b) { return a.site < b.site; });
-  }
-}
-
 struct Propagation_statistics
 {
   std::size_t events = 0;
@@ -68,64 +39,17 @@ struct Propagation_statistics
   std::size_t pruned = 0;
 };
 
-/// An open-addressing set of 64-bit keys: which (site, face) pairs were offered already.
-/// One flat table instead of a vector per face keeps propagation free of small allocations.
-class Key_set
-{
-public:
-  explicit Key_set(std::size_t expected = 1024) { reset(expected); }
-
-  void reset(std::size_t expected)
-  {
-    std::size_t capacity = 1024;
-    while(capacity < 2 * expected) capacity *= 2;
-    m_keys.assign(capacity, empty);
-    m_size = 0;
-  }
-
-  /// inserts `key`; returns false if it was there
-  bool insert(std::uint64_t key)
-  {
-    if(2 * (m_size + 1) > m_keys.size()) grow();
-    std::size_t i = slot(key);
-    while(m_keys[i] != empty)
-    {
-      if(m_keys[i] == key) return false;
-      i = (i + 1) & (m_keys.size() - 1);
-    }
-    m_keys[i] = key;
-    ++m_size;
-    return true;
-  }
-
-private:
-  static constexpr std::uint64_t empty = ~std::uint64_t(0);
-  std::size_t slot(std::uint64_t key) const
-  {
-    key ^= key >> 33;
-    key *= 0xff51afd7ed558ccdull;
-    key ^= key >> 33;
-    return static_cast<std::size_t>(key) & (m_keys.size() - 1);
-  }
-  void grow()
-  {
-    std::vector<std::uint64_t> old;
-    old.swap(m_keys);
-    m_keys.assign(old.size() * 2, empty);
-    m_size = 0;
-    for(std::uint64_t k : old)
-      if(k != empty) insert(k);
-  }
-  std::vector<std::uint64_t> m_keys;
-  std::size_t m_size = 0;
-};
-
 /// The propagation and its state, so that the connectivity repair can re-run it locally.
+/// `Fields` gives `value(site, vertex)`; `Blocked` says whether local edge k of face f is a
+/// breakline.
 template <class TriangleMesh, class Fields, class Blocked>
 class Propagation
 {
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
+
+  /// the number of times a face can be repropagated (the epoch is part of the offer keys)
+  static constexpr std::size_t max_epochs = 65536;
 
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
               const Blocked& blocked)
@@ -133,23 +57,23 @@ public:
       m_epoch(mesh.number_of_faces(), 0)
   {}
 
-  std::vector<std::vector<Face_field> > candidates;
+  Candidate_lists candidates;
   Propagation_statistics statistics;
 
   /// the first propagation, from every site
   void run()
   {
-    candidates.assign(m_mesh.number_of_faces(), std::vector<Face_field>());
-    m_tested.reset(8 * m_mesh.number_of_faces());
+    candidates.assign(m_mesh.number_of_faces(), std::vector<Candidate>());
+    m_offered.reset(8 * m_mesh.number_of_faces());
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       offer(static_cast<std::uint32_t>(i), m_site_faces[i]);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     drain(no_ban, nullptr);
-    for(std::vector<Face_field>& list : candidates) clean_candidate_list(list);
+    for(std::vector<Candidate>& list : candidates) clean_candidate_list(list);
   }
 
-  /// After the repair banned (site, face) pairs: the banned fields are removed from the
-  /// `dirty` faces, whose lists are then refilled from their neighbours' fields, and the
+  /// After the repair banned (site, face) pairs: the banned candidates are removed from the
+  /// `dirty` faces, whose lists are then refilled from their neighbours' candidates, and the
   /// propagation goes on from there. `touched` receives every face whose list changed.
   template <class Banned>
   void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched)
@@ -157,20 +81,21 @@ public:
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     for(std::size_t f : dirty)
     {
-      std::vector<Face_field>& list = candidates[f];
-      list.erase(std::remove_if(list.begin(), list.end(), [&](const Face_field& x) { return banned(x.site, f); }),
+      std::vector<Candidate>& list = candidates[f];
+      list.erase(std::remove_if(list.begin(), list.end(), [&](const Candidate& x) { return banned(x.site, f); }),
                  list.end());
+      CGAL_assertion(m_epoch[f] + 1 < max_epochs);
       ++m_epoch[f];   // forget what was offered to f: everything may be offered again
       is_touched[f] = 1;
     }
     for(std::size_t f : dirty)
     {
-      for(const Face_field& x : candidates[f]) m_tested.insert(key(x.site, f));
+      for(const Candidate& x : candidates[f]) m_offered.insert(key(x.site, f));
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t g = m_mesh.neighbors[f][k];
         if(g == Mesh::none || m_blocked(f, k)) continue;
-        for(const Face_field& x : candidates[g])
+        for(const Candidate& x : candidates[g])
           if(!banned(x.site, f)) offer(x.site, f);
       }
     }
@@ -207,21 +132,21 @@ private:
 
   std::uint64_t key(std::uint32_t site, std::size_t face) const
   {
-    return (std::uint64_t(site) * m_mesh.number_of_faces() + face) * 256 + (m_epoch[face] & 255);
+    return (std::uint64_t(site) * m_mesh.number_of_faces() + face) * max_epochs + m_epoch[face];
   }
 
   // offers the field of `site` to face `f`, once per (site, face) and epoch
   void offer(std::uint32_t site, std::size_t f)
   {
-    if(!m_tested.insert(key(site, f))) return;
+    if(!m_offered.insert(key(site, f)).second) return;
     Event e;
     e.site = site;
     e.face = static_cast<std::uint32_t>(f);
     for(int k = 0; k < 3; ++k)
       e.value[k] = m_fields.value(site, m_mesh.triangles[f][k]);
     // lists only grow: a field dominated now stays dominated, so do not queue it
-    const Face_field x = { e.site, e.value };
-    for(const Face_field& b : candidates[f])
+    const Candidate x = { e.site, e.value };
+    for(const Candidate& b : candidates[f])
       if(dominates(b, x)) { ++statistics.pruned; return; }
     e.key = (std::min)((std::min)(e.value[0], e.value[1]), e.value[2]);
     m_queue.push(e);
@@ -235,10 +160,10 @@ private:
       const Event e = m_queue.top();
       m_queue.pop();
       ++statistics.events;
-      const Face_field x = { e.site, e.value };
-      std::vector<Face_field>& list = candidates[e.face];
+      const Candidate x = { e.site, e.value };
+      std::vector<Candidate>& list = candidates[e.face];
       bool pruned = false;
-      for(const Face_field& b : list)
+      for(const Candidate& b : list)
         if(dominates(b, x)) { pruned = true; break; }
       if(pruned)
       {
@@ -262,7 +187,7 @@ private:
   const std::vector<std::size_t>& m_site_faces;
   Blocked m_blocked;
   std::vector<std::uint32_t> m_epoch;
-  Key_set m_tested;
+  Flat_hash_table<Key_slot<std::uint64_t> > m_offered;
   std::priority_queue<Event, std::vector<Event>, Later> m_queue;
 };
 
@@ -270,4 +195,4 @@ private:
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PROPAGATION_H

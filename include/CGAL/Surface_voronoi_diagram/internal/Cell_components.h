@@ -1,18 +1,29 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // "One site, one region": the connected pieces of every cell. Propagation keeps far-away
 // islands out but does not by itself make cells connected (a site admitted in a face where
 // it wins nothing can still win beyond it), so the diagram checks and repairs.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CONNECTIVITY_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CONNECTIVITY_H
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CELL_COMPONENTS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CELL_COMPONENTS_H
 
-#include <CGAL/Surface_voronoi_diagram/internal/stitching.h>
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -98,17 +109,11 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
                                 std::size_t number_of_sites, const Blocked_edge& blocked_edge)
 {
   const std::size_t np = partition.pieces.size();
-  std::vector<std::size_t> parent(np);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
+  Disjoint_sets pieces_of_a_cell(np);
   for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
     if(partition.pieces[p].site != partition.pieces[q].site) return;
     if(e != no_site && blocked_edge(e)) return;
-    std::size_t a = find(p), b = find(q);
-    if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+    pieces_of_a_cell.unite(p, q);
   });
 
   Cell_components cc;
@@ -117,7 +122,7 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
   std::vector<std::size_t> root_component(np, no_site);
   for(std::size_t p = 0; p < np; ++p)
   {
-    const std::size_t r = find(p);
+    const std::size_t r = pieces_of_a_cell.find(p);
     if(root_component[r] == no_site)
     {
       root_component[r] = cc.component_site.size();
@@ -136,4 +141,4 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CELL_COMPONENTS_H

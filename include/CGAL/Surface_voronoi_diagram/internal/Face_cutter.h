@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Cutting (SurfaceVoronoi, stage 2): inside one face, the lower envelope of the candidate
 // fields. With squared distances interpolated linearly, the difference of two fields is
@@ -7,11 +15,13 @@
 // one half-plane per competitor. Vertices are kept symbolic (a corner, a bisector crossing
 // a mesh edge, or a triple point) so that stitching can identify them across faces.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUTTING_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUTTING_H
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTTER_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTTER_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
-#include <CGAL/Surface_voronoi_diagram/internal/propagation.h>
 
 #include <array>
 #include <cstdint>
@@ -22,7 +32,7 @@ namespace Surface_voronoi {
 namespace internal {
 
 /// A vertex of a piece, in terms of the face's candidate list (indices into it).
-struct Piece_vertex
+struct Symbolic_vertex
 {
   enum Kind : std::uint8_t { CORNER, EDGE, TRIPLE };
   Kind kind;
@@ -39,37 +49,37 @@ struct Piece_edge_support
   std::uint32_t other;   // the other site (candidate index) otherwise
 };
 
-struct Raw_piece
+struct Symbolic_piece
 {
   std::uint32_t candidate;                    // index into the face's candidate list
-  std::vector<Piece_vertex> vertices;         // counter-clockwise, as the face
+  std::vector<Symbolic_vertex> vertices;         // counter-clockwise, as the face
   std::vector<Piece_edge_support> supports;   // supports[n]: edge vertices[n] -> vertices[n+1]
 };
 
 struct Face_cut
 {
-  std::vector<Raw_piece> pieces;
+  std::vector<Symbolic_piece> pieces;
   bool degenerate = false;                    // some vertex lies exactly on a further bisector
 };
 
 class Face_cutter
 {
 public:
-  explicit Face_cutter(const std::vector<Face_field>& candidates) : m_c(candidates) {}
+  explicit Face_cutter(const std::vector<Candidate>& candidates) : m_candidates(candidates) {}
 
   /// sign of h_il = D_i - D_l at vertex `v` of the piece of candidate i
-  int sign_at(const Piece_vertex& v, std::uint32_t i, std::uint32_t l) const
+  int sign_at(const Symbolic_vertex& v, std::uint32_t i, std::uint32_t l) const
   {
-    const double* Di = m_c[i].value.data();
-    const double* Dl = m_c[l].value.data();
+    const double* Di = m_candidates[i].value.data();
+    const double* Dl = m_candidates[l].value.data();
     switch(v.kind)
     {
-    case Piece_vertex::CORNER:
+    case Symbolic_vertex::CORNER:
       return (Di[v.local] > Dl[v.local]) - (Di[v.local] < Dl[v.local]);
-    case Piece_vertex::EDGE:
+    case Symbolic_vertex::EDGE:
     {
       const int k0 = v.local, k1 = (v.local + 1) % 3;
-      const double* Dj = m_c[v.other].value.data();
+      const double* Dj = m_candidates[v.other].value.data();
       // The crossing of bisector (i,j) with the edge is at t = A / (A - B); there
       // h_il = (A*D - B*C) / (A - B), and A - B has the sign of A.
       const int sA = (Di[k0] > Dj[k0]) - (Di[k0] < Dj[k0]);
@@ -77,11 +87,11 @@ public:
       // A*D - B*C with A=(Di-Dj)(k0), B=(Di-Dj)(k1), C=(Di-Dl)(k0), D=(Di-Dl)(k1)
       return s * sA;
     }
-    case Piece_vertex::TRIPLE:
+    case Symbolic_vertex::TRIPLE:
     default:
     {
-      const double* Dj = m_c[v.other].value.data();
-      const double* Dm = m_c[v.third].value.data();
+      const double* Dj = m_candidates[v.other].value.data();
+      const double* Dm = m_candidates[v.third].value.data();
       const Difference_row rij = { Di, Dj }, rim = { Di, Dm }, ril = { Di, Dl };
       return sign_of_det3_of_differences(rij, rim, &ril) * sign_of_det3_of_differences(rij, rim, nullptr);
     }
@@ -91,25 +101,25 @@ public:
   Face_cut cut() const
   {
     Face_cut result;
-    const std::uint32_t n = static_cast<std::uint32_t>(m_c.size());
+    const std::uint32_t n = static_cast<std::uint32_t>(m_candidates.size());
     if(n == 1)
     {
       // most faces: one candidate owns the whole triangle
-      Raw_piece piece;
+      Symbolic_piece piece;
       piece.candidate = 0;
-      piece.vertices = { Piece_vertex{ Piece_vertex::CORNER, 0, 0, 0 }, Piece_vertex{ Piece_vertex::CORNER, 1, 0, 0 },
-                         Piece_vertex{ Piece_vertex::CORNER, 2, 0, 0 } };
+      piece.vertices = { Symbolic_vertex{ Symbolic_vertex::CORNER, 0, 0, 0 }, Symbolic_vertex{ Symbolic_vertex::CORNER, 1, 0, 0 },
+                         Symbolic_vertex{ Symbolic_vertex::CORNER, 2, 0, 0 } };
       piece.supports = { Piece_edge_support{ true, 0, 0 }, Piece_edge_support{ true, 1, 0 }, Piece_edge_support{ true, 2, 0 } };
       result.pieces.push_back(std::move(piece));
       return result;
     }
     for(std::uint32_t i = 0; i < n; ++i)
     {
-      Raw_piece piece;
+      Symbolic_piece piece;
       piece.candidate = i;
       for(std::uint8_t k = 0; k < 3; ++k)
       {
-        piece.vertices.push_back(Piece_vertex{ Piece_vertex::CORNER, k, 0, 0 });
+        piece.vertices.push_back(Symbolic_vertex{ Symbolic_vertex::CORNER, k, 0, 0 });
         piece.supports.push_back(Piece_edge_support{ true, k, 0 });
       }
       bool empty = false;
@@ -117,12 +127,12 @@ public:
       {
         if(l == i)
           continue;
-        const double* Di = m_c[i].value.data();
-        const double* Dl = m_c[l].value.data();
+        const double* Di = m_candidates[i].value.data();
+        const double* Dl = m_candidates[l].value.data();
         if(Di[0] == Dl[0] && Di[1] == Dl[1] && Di[2] == Dl[2])
         {
           // identical fields on this face: the lower site index takes it all
-          if(m_c[l].site < m_c[i].site) empty = true;
+          if(m_candidates[l].site < m_candidates[i].site) empty = true;
           continue;
         }
         if(Dl[0] > Di[0] && Dl[1] > Di[1] && Dl[2] > Di[2])
@@ -138,7 +148,7 @@ public:
 private:
   // Clips the piece of candidate i by {h_il <= 0}; returns false if nothing of positive
   // area remains.
-  bool clip(Raw_piece& piece, std::uint32_t i, std::uint32_t l, bool& degenerate) const
+  bool clip(Symbolic_piece& piece, std::uint32_t i, std::uint32_t l, bool& degenerate) const
   {
     const std::size_t n = piece.vertices.size();
     m_signs.resize(n);
@@ -156,7 +166,7 @@ private:
       return false;
 
     // origin of each output vertex: (index, is_crossing) -> crossing on edge index
-    std::vector<Piece_vertex> out_vertices;
+    std::vector<Symbolic_vertex> out_vertices;
     std::vector<std::pair<std::size_t, bool> > origin;
     out_vertices.reserve(n + 1);
     origin.reserve(n + 1);
@@ -172,9 +182,9 @@ private:
       {
         const Piece_edge_support& s = piece.supports[k];
         if(s.on_mesh_edge)
-          out_vertices.push_back(Piece_vertex{ Piece_vertex::EDGE, s.local, l, 0 });
+          out_vertices.push_back(Symbolic_vertex{ Symbolic_vertex::EDGE, s.local, l, 0 });
         else
-          out_vertices.push_back(Piece_vertex{ Piece_vertex::TRIPLE, 0, s.other, l });
+          out_vertices.push_back(Symbolic_vertex{ Symbolic_vertex::TRIPLE, 0, s.other, l });
         origin.emplace_back(k, true);
       }
     }
@@ -195,7 +205,7 @@ private:
     return true;
   }
 
-  const std::vector<Face_field>& m_c;
+  const std::vector<Candidate>& m_candidates;
   mutable std::vector<int> m_signs;
 };
 
@@ -203,4 +213,4 @@ private:
 } // namespace Surface_voronoi
 } // namespace CGAL
 
-#endif
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTTER_H

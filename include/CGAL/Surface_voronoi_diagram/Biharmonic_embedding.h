@@ -1,0 +1,358 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The biharmonic embedding of a triangle mesh (\cgalCite{cgal:lrf-bd-10}): vertex v goes to
+// (phi_1(v)/lambda_1, ..., phi_d(v)/lambda_d) in R^d, where L phi = lambda M phi are the
+// smallest non-zero eigenpairs of the cotangent Laplacian, so that Euclidean distance in
+// R^d is the (truncated) biharmonic distance.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_BIHARMONIC_EMBEDDING_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_BIHARMONIC_EMBEDDING_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/Default.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+namespace Surface_voronoi {
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated Use the named parameters `embedding_dimension`, `eigen_tolerance` and
+/// `max_eigen_solver_restarts` of `CGAL::Biharmonic_embedding`.
+struct CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
+Biharmonic_options
+{
+  /// the dimension `d`
+  std::size_t dimension = 10;
+  /// the relative tolerance of the eigen-solver
+  double tolerance = 1e-10;
+  /// the most restarts of the eigen-solver
+  std::size_t max_iterations = 1000;
+};
+} // namespace Surface_voronoi
+
+/// \ingroup PkgSurfaceVoronoiDiagramMetrics
+///
+/// The biharmonic embedding of a triangle mesh, computed once at construction: the metric of
+/// the reference paper \cgalCite{cgal:xwz-svdm-22}. The squared distance between two points
+/// is their truncated biharmonic distance; it is about twenty times smaller than the squared
+/// length of a path between them on a unit-size mesh, so power weights are given in these
+/// squared units (see `Surface_voronoi::weight_for_squared_length()`).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
+///         default: the mesh's internal `CGAL::vertex_point` map
+/// \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
+/// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
+///         factorization; default: `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLDLT`
+///
+/// \cgalModels `SurfaceVoronoiEmbedding`
+template <class TriangleMesh,
+          class VertexPointMap = Default,
+          class GeomTraits = Default,
+          class LA = Default>
+class Biharmonic_embedding
+{
+public:
+  /// \name Types
+  /// @{
+  /// the mesh type
+  typedef TriangleMesh Triangle_mesh;
+  /// `Surface_voronoi::Embedding_tag`
+  typedef Surface_voronoi::Embedding_tag Metric_category;
+  /// a vertex of the mesh
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// a face of the mesh
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  /// the vertex point map
+  typedef typename Default::Get<VertexPointMap,
+            typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  /// the geometric traits
+  typedef typename Default::Get<GeomTraits,
+            typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type Geom_traits;
+  /// the linear algebra traits
+  typedef typename Default::Get<LA, Surface_voronoi::internal::Default_eigen_LA>::type Linear_algebra_traits;
+  /// a point in a face: the face and barycentric coordinates
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  /// @}
+
+  /// Computes the embedding of `tm`.
+  ///
+  /// \param tm the mesh; it must stay alive while the embedding is used
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`VertexPointMap`}
+  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{geom_traits}
+  ///     \cgalParamDescription{an instance of the geometric traits}
+  ///     \cgalParamType{`Geom_traits`}
+  ///     \cgalParamDefault{a default-constructed `Geom_traits`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::embedding_dimension}
+  ///     \cgalParamDescription{the number `d` of non-zero eigenpairs used}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{10 (the paper's)}
+  ///     \cgalParamExtra{at most `maximum_dimension(tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::eigen_tolerance}
+  ///     \cgalParamDescription{the relative tolerance of the Lanczos iteration}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{`1e-10`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::max_eigen_solver_restarts}
+  ///     \cgalParamDescription{the most Lanczos restarts before `Surface_voronoi::Numerical_error` is thrown}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{1000}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{called with the fraction of the work done (in [0, 1]); returning
+  ///       `false` stops the computation, and the embedding is then `is_cancelled()`}
+  ///     \cgalParamType{a callable `bool(double)`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \pre `tm` is a triangle mesh without faces of zero area
+  /// \pre `1 <= d <= maximum_dimension(tm)`
+  /// \throws Surface_voronoi::Numerical_error if the eigen-solver fails
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  explicit Biharmonic_embedding(const TriangleMesh& tm,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+    namespace SVnp = Surface_voronoi::internal_np;
+    const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                  get_const_property_map(CGAL::vertex_point, tm));
+    const std::size_t dimension = choose_parameter(get_parameter(np, SVnp::embedding_dimension), std::size_t(10));
+    const double tolerance = choose_parameter(get_parameter(np, SVnp::eigen_tolerance), 1e-10);
+    const std::size_t restarts = choose_parameter(get_parameter(np, SVnp::max_eigen_solver_restarts), std::size_t(1000));
+    Surface_voronoi::internal::Stage_times* times =
+        choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::internal::Stage_times*>(nullptr));
+    std::function<bool(double)> callback;
+    assign_callback(callback, np, std::integral_constant<bool,
+                    !is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value>());
+    compute(tm, vpm, dimension, tolerance, restarts, callback, times);
+  }
+
+CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
+  /// \deprecated Use the named parameters `embedding_dimension`, `eigen_tolerance` and
+  /// `max_eigen_solver_restarts`.
+  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+  CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
+  Biharmonic_embedding(const TriangleMesh& tm, const Surface_voronoi::Biharmonic_options& options,
+                       const NamedParameters& np = CGAL::parameters::default_values())
+    : Biharmonic_embedding(tm, Surface_voronoi::parameters::embedding_dimension(options.dimension,
+                               Surface_voronoi::parameters::eigen_tolerance(options.tolerance,
+                               Surface_voronoi::parameters::max_eigen_solver_restarts(options.max_iterations, np))))
+  {}
+
+CGAL_SURFACE_VORONOI_DEPRECATED_END
+
+  /// the largest dimension `tm` allows: its number of vertices minus its number of connected
+  /// components (one zero eigenvalue each) minus one
+  static std::size_t maximum_dimension(const TriangleMesh& tm)
+  {
+    const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> mesh(tm, get_const_property_map(CGAL::vertex_point, tm));
+    const std::size_t used = mesh.number_of_components + 1;
+    return mesh.number_of_vertices() > used ? mesh.number_of_vertices() - used : 0;
+  }
+
+  /// \name SurfaceVoronoiEmbedding
+  /// @{
+  /// the mesh the embedding was computed on
+  const Triangle_mesh& triangle_mesh() const { return *m_mesh->source_mesh; }
+
+  /// the dimension `d` of the embedding space (0 if the computation was cancelled)
+  std::size_t dimension() const { return static_cast<std::size_t>(m_coordinates.cols()); }
+
+  /// writes the `dimension()` coordinates of `v` to `out`
+  template <class OutputIterator>
+  OutputIterator coordinates(vertex_descriptor v, OutputIterator out) const
+  {
+    const Eigen::Index i = static_cast<Eigen::Index>(vertex_index(v));
+    for(Eigen::Index k = 0; k < m_coordinates.cols(); ++k)
+      *out++ = m_coordinates(i, k);
+    return out;
+  }
+  /// @}
+
+  /// whether the `callback` named parameter stopped the computation; the embedding then has
+  /// no coordinates and must not be used
+  bool is_cancelled() const { return m_cancelled; }
+
+  /// the embedding of a surface point given by its face location (barycentric interpolation)
+  std::vector<double> embedding(const Face_location& location) const
+  {
+    std::vector<double> e(dimension(), 0.), c(dimension());
+    const TriangleMesh& tm = triangle_mesh();
+    const auto h = halfedge(location.first, tm);
+    const vertex_descriptor corners[3] = { source(h, tm), target(h, tm), target(next(h, tm), tm) };
+    for(int k = 0; k < 3; ++k)
+    {
+      coordinates(corners[k], c.begin());
+      for(std::size_t j = 0; j < c.size(); ++j)
+        e[j] += location.second[k] * c[j];
+    }
+    return e;
+  }
+
+  /// \deprecated the mesh is the one the embedding was computed on: use `embedding(location)`
+  CGAL_DEPRECATED_MSG("use embedding(location)")
+  std::vector<double> embedding(const Face_location& location, const TriangleMesh&) const { return embedding(location); }
+
+  /// squared biharmonic (embedding) distance between two vertices
+  double squared_distance(vertex_descriptor u, vertex_descriptor v) const
+  {
+    const Eigen::Index i = static_cast<Eigen::Index>(vertex_index(u));
+    const Eigen::Index j = static_cast<Eigen::Index>(vertex_index(v));
+    return (m_coordinates.row(i) - m_coordinates.row(j)).squaredNorm();
+  }
+
+  /// the `d` eigenvalues used, ascending (zero modes excluded)
+  const Eigen::VectorXd& eigenvalues() const { return m_eigenvalues; }
+  /// every eigenvalue computed, zero modes included
+  const Eigen::VectorXd& computed_eigenvalues() const { return m_all_eigenvalues; }
+  /// every eigenvector computed (M-orthonormal columns, zero modes first), rows in vertex order
+  const Eigen::MatrixXd& computed_eigenvectors() const { return m_eigenvectors; }
+  /// the number of zero eigenvalues skipped (= connected components)
+  std::size_t number_of_zero_modes() const { return m_zero_modes; }
+  /// the row of `v` in the matrices above (the order of `vertices(tm)`)
+  std::size_t vertex_index(vertex_descriptor v) const { return get(m_mesh->vertex_index, v); }
+
+  /// \cond SKIP_IN_MANUAL
+  // The indexed copy of the mesh, shared with the diagram (an internal hook).
+  const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >& indexed_mesh() const { return m_mesh; }
+  /// \endcond
+
+private:
+  template <class NamedParameters>
+  static void assign_callback(std::function<bool(double)>& callback, const NamedParameters& np, std::true_type)
+  {
+    callback = CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
+  }
+  template <class NamedParameters>
+  static void assign_callback(std::function<bool(double)>&, const NamedParameters&, std::false_type) {}
+
+  void compute(const TriangleMesh& tm, const Vertex_point_map& vpm, std::size_t dimension, double tolerance,
+               std::size_t restarts, const std::function<bool(double)>& callback,
+               Surface_voronoi::internal::Stage_times* times)
+  {
+    namespace SVi = Surface_voronoi::internal;
+    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
+    CGAL_precondition_msg(dimension >= 1, "the embedding dimension must be at least 1");
+    SVi::Stage_timer timer(times);
+    auto mesh = std::make_shared<SVi::Indexed_mesh<TriangleMesh> >(tm, vpm);
+    m_mesh = mesh;
+    Eigen::SparseMatrix<double> L, M;
+    SVi::assemble_cotangent_laplacian(mesh->points, mesh->triangles, L, M);
+    timer.stop("assembly");
+
+    // One zero eigenvalue per connected component: skip all of them.
+    m_zero_modes = mesh->number_of_components;
+    const Eigen::Index nev = static_cast<Eigen::Index>(dimension + m_zero_modes);
+    CGAL_precondition_msg(static_cast<std::size_t>(nev) < mesh->number_of_vertices(),
+                          "the mesh has too few vertices for an embedding of this dimension (see maximum_dimension())");
+    if(callback && !callback(0.1)) { cancel(); return; }
+
+    // progress during the solve: the number of operator applications, on a saturating scale
+    long applications = 0;
+    std::function<bool()> keep_going;
+    if(callback)
+      keep_going = [&]() {
+        ++applications;
+        return callback(0.1 + 0.85 * double(applications) / double(applications + 200));
+      };
+    SVi::Eigen_solve_result r;
+    try
+    {
+      r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(L, M, nev, tolerance,
+                                                                       static_cast<Eigen::Index>(restarts), keep_going);
+    }
+    catch(const SVi::Eigen_solve_cancelled&)
+    {
+      cancel();
+      return;
+    }
+    timer.stop("solve");
+
+    m_all_eigenvalues = r.eigenvalues;
+    const double lambda_first = r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes)];
+    const double lambda_last_zero = m_zero_modes > 0 ? r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes) - 1] : 0.;
+    if(!(lambda_first > 0) || !(std::abs(lambda_last_zero) < 1e-6 * lambda_first))
+      throw Surface_voronoi::Numerical_error("the spectrum does not have the expected "
+          + std::to_string(m_zero_modes) + " zero eigenvalue(s) (one per connected component); is the mesh degenerate?");
+
+    const std::size_t n = mesh->number_of_vertices();
+    m_eigenvalues.resize(static_cast<Eigen::Index>(dimension));
+    m_coordinates.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(dimension));
+    for(std::size_t k = 0; k < dimension; ++k)
+    {
+      const Eigen::Index col = static_cast<Eigen::Index>(k + m_zero_modes);
+      const double lambda = r.eigenvalues[col];
+      m_eigenvalues[static_cast<Eigen::Index>(k)] = lambda;
+      // Divide by lambda, not lambda^2: the squared distance then sums (dphi)^2 / lambda^2.
+      m_coordinates.col(static_cast<Eigen::Index>(k)) = r.eigenvectors.col(col) / lambda;
+    }
+    m_eigenvectors = std::move(r.eigenvectors);
+    if(callback) callback(1.);
+  }
+
+  void cancel()
+  {
+    m_cancelled = true;
+    m_coordinates.resize(0, 0);
+  }
+
+  std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> > m_mesh;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m_coordinates;
+  Eigen::VectorXd m_eigenvalues, m_all_eigenvalues;
+  Eigen::MatrixXd m_eigenvectors;
+  std::size_t m_zero_modes = 0;
+  bool m_cancelled = false;
+};
+
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_BIHARMONIC_EMBEDDING_H

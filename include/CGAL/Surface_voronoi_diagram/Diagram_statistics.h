@@ -1,0 +1,70 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// What the construction of a diagram did.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_DIAGRAM_STATISTICS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_DIAGRAM_STATISTICS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// Counts describing the construction of a `CGAL::Surface_voronoi_diagram` (no timings:
+/// those belong to the benchmarks).
+struct Diagram_statistics
+{
+  /// the number of sites
+  std::size_t sites = 0;
+  /// the non-empty cells
+  std::size_t cells = 0;
+  /// the cells without area (a power weight too small, a merged site)
+  std::size_t empty_cells = 0;
+  /// the connected pieces of all cells, after repair
+  std::size_t pieces = 0;
+  /// the cells in more than one piece before repair
+  std::size_t broken_cells_before_repair = 0;
+  /// the cells in more than one piece after repair (0 unless repair was off or ran out of rounds)
+  std::size_t broken_cells = 0;
+  /// the repair rounds run
+  std::size_t repair_rounds = 0;
+  /// the (site, face) pairs the repair excluded
+  std::size_t banned_fields = 0;
+  /// the faces no site reaches
+  std::size_t unreached_faces = 0;
+  /// the connected components holding unreached faces
+  std::size_t unreached_components = 0;
+  /// the area no site reaches
+  double unreached_area = 0;
+  /// the area of the surface
+  double surface_area = 0;
+  /// the fields offered to a face during propagation
+  std::size_t propagation_events = 0;
+  /// the fields admitted into a face's candidate list
+  std::size_t admitted_fields = 0;
+  /// the mean length of a face's candidate list
+  double mean_candidates_per_face = 0;
+  /// the longest candidate list
+  std::size_t max_candidates_per_face = 0;
+  /// the partition vertices welded because they coincide exactly
+  std::size_t welded_vertices = 0;
+  /// the partition vertices inserted into pieces' edges to avoid T-junctions
+  std::size_t inserted_vertices = 0;
+};
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_DIAGRAM_STATISTICS_H

@@ -1,0 +1,528 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The Voronoi diagram of sites on a triangle-mesh surface, computed once at construction,
+// then queried.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SURFACE_VORONOI_DIAGRAM_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_SURFACE_VORONOI_DIAGRAM_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/disable_warnings.h>
+
+#include <CGAL/Surface_voronoi_diagram/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+#include <CGAL/Surface_voronoi_diagram/options.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_geometry.h>
+#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Diagram_builder.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/Default.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+///
+/// The Voronoi diagram of sites on a triangle-mesh surface, under a metric that is a model
+/// of `SurfaceVoronoiEmbedding` (per-vertex coordinates, such as `CGAL::Biharmonic_embedding`)
+/// or of `SurfaceVoronoiLazyMetric` (distances computed on demand, such as
+/// `Surface_voronoi::Geodesic_metric`), by SurfaceVoronoi's propagate-and-cut
+/// \cgalCite{cgal:xwz-svdm-22}. The diagram is computed at construction, checked (and
+/// repaired) so that every cell is one connected region, and then answers queries; the
+/// outputs (`Surface_voronoi::make_arrangement()`, `Surface_voronoi::dual_triangulation()`,
+/// `CGAL::draw()`) read it.
+///
+/// The diagram keeps a pointer to the mesh, which must stay alive and unchanged while the
+/// diagram is used; it does not use the metric after its construction. It can be moved,
+/// not copied.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam Metric a model of `SurfaceVoronoiEmbedding` or `SurfaceVoronoiLazyMetric`
+/// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points; default:
+///         the mesh's internal `CGAL::vertex_point` map
+/// \tparam GeomTraits a model of `Kernel` for the points the diagram returns; default: the
+///         kernel of the point type of `VertexPointMap`
+template <class TriangleMesh,
+          class Metric = Biharmonic_embedding<TriangleMesh>,
+          class VertexPointMap = Default,
+          class GeomTraits = Default>
+class Surface_voronoi_diagram
+{
+  typedef Surface_voronoi::internal::Indexed_mesh<TriangleMesh> Indexed_mesh;
+  typedef Surface_voronoi::internal::Diagram_data<TriangleMesh> Data;
+  friend struct Surface_voronoi::internal::Diagram_access;
+
+public:
+  /// \name Types
+  /// @{
+  /// the mesh type
+  typedef TriangleMesh Triangle_mesh;
+  /// the metric type
+  typedef Metric Metric_type;
+  /// a vertex of the mesh
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// a face of the mesh
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  /// the vertex point map
+  typedef typename Default::Get<VertexPointMap,
+            typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  /// the geometric traits
+  typedef typename Default::Get<GeomTraits,
+            typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type Geom_traits;
+  /// the point type of the geometric traits
+  typedef typename Geom_traits::Point_3 Point_3;
+  /// a point in a face: the face and barycentric coordinates
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  /// @}
+
+  /// the index returned where no site reaches
+  static constexpr std::size_t no_site = std::size_t(-1);
+
+  /// Computes the diagram.
+  ///
+  /// \tparam SiteRange a range of `vertex_descriptor`, of `Face_location` or of points
+  ///         (a point is moved to the nearest surface point)
+  /// \param tm the surface; it must stay alive and unchanged while the diagram is used
+  /// \param metric the metric, built on `tm` (a lazy metric is told the sites and asked
+  ///        distances during the construction, and not used afterwards)
+  /// \param sites the sites; a site's index is its position in the range
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamSectionBegin{Input}
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`VertexPointMap`}
+  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{geom_traits}
+  ///     \cgalParamDescription{an instance of the geometric traits, used to construct returned points}
+  ///     \cgalParamType{`Geom_traits`}
+  ///     \cgalParamDefault{a default-constructed `Geom_traits`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_is_constrained_map}
+  ///     \cgalParamDescription{breaklines: a property map telling which edges of `tm` no cell crosses}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
+  ///     \cgalParamDefault{no breaklines}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::site_weight_map}
+  ///     \cgalParamDescription{power weights, which make the diagram a power diagram: a point
+  ///       belongs to the site minimizing its squared distance minus the weight. Weights are in
+  ///       the squared units of the metric (see `Surface_voronoi::weight_for_squared_length()`);
+  ///       a large weight can empty other cells (counted in `statistics().empty_cells`)}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` whose key is the sites' type (as the
+  ///       range holds them) or `std::size_t` (the site index), and whose value converts to `double`}
+  ///     \cgalParamDefault{all weights zero}
+  ///     \cgalParamExtra{the weights must be finite}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::max_site_distance}
+  ///     \cgalParamDescription{a site given as a point farther than this from the surface makes
+  ///       the constructor throw `Surface_voronoi::Site_too_far_error`}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{infinity}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::coincident_sites}
+  ///     \cgalParamDescription{what two sites at the same surface point mean}
+  ///     \cgalParamType{`Surface_voronoi::Coincident_sites`}
+  ///     \cgalParamDefault{`Surface_voronoi::Coincident_sites::REJECT` (a precondition)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamSectionEnd
+  ///   \cgalParamSectionBegin{Algorithm}
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::candidate_selection}
+  ///     \cgalParamDescription{propagation (SurfaceVoronoi) or every globally nearest site (the
+  ///       restricted Voronoi diagram, for embedding metrics only)}
+  ///     \cgalParamType{`Surface_voronoi::Candidate_selection`}
+  ///     \cgalParamDefault{`Surface_voronoi::Candidate_selection::PROPAGATION`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::repair_cells}
+  ///     \cgalParamDescription{whether cells found in several pieces are repaired (never with
+  ///       `GLOBAL_NEAREST`)}
+  ///     \cgalParamType{`bool`}
+  ///     \cgalParamDefault{`true`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::max_repair_rounds}
+  ///     \cgalParamDescription{the most repair rounds; cells still broken afterwards are counted
+  ///       in `statistics().broken_cells`}
+  ///     \cgalParamType{`std::size_t`}
+  ///     \cgalParamDefault{100}
+  ///     \cgalParamExtra{less than 65535}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{callback}
+  ///     \cgalParamDescription{called with the fraction of the work done (in [0, 1]); returning
+  ///       `false` stops the construction, which returns normally: the diagram is then
+  ///       `is_cancelled()` and holds no cells}
+  ///     \cgalParamType{a callable `bool(double)`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
+  ///   \cgalParamSectionEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \pre `tm` is a valid triangle mesh whose faces have positive area and whose vertices are
+  ///      manifold; the sites are not empty; with `Coincident_sites::REJECT`, no two sites are
+  ///      at the same surface point; the weights are finite. `Surface_voronoi::validate_input()`
+  ///      checks all of these and names what is wrong.
+  /// \throws Surface_voronoi::Input_error if a site is not on `tm` (a descriptor of another
+  ///         mesh, coordinates that are not numbers) or if `metric` was built on another mesh:
+  ///         these checks protect memory and stay on in every build
+  /// \throws Surface_voronoi::Site_too_far_error as said for `max_site_distance`
+  /// \throws Surface_voronoi::Numerical_error if a lazy metric returns an invalid distance
+  template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Surface_voronoi_diagram(const TriangleMesh& tm,
+                          Metric& metric,
+                          const SiteRange& sites,
+                          const NamedParameters& np = CGAL::parameters::default_values())
+    : m_tm(&tm)
+  {
+    construct(metric, sites, np);
+  }
+
+CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
+  /// \deprecated Use the named parameters instead of `Surface_voronoi::Diagram_options`.
+  template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  CGAL_DEPRECATED_MSG("use the named parameters of Surface_voronoi_diagram")
+  Surface_voronoi_diagram(const TriangleMesh& tm, Metric& metric, const SiteRange& sites,
+                          const Surface_voronoi::Diagram_options& options,
+                          const NamedParameters& np = CGAL::parameters::default_values())
+    : m_tm(&tm)
+  {
+    namespace SVp = Surface_voronoi::parameters;
+    const auto chain = SVp::candidate_selection(options.candidates, SVp::repair_cells(options.repair,
+                       SVp::max_repair_rounds(options.max_repair_rounds, SVp::max_site_distance(options.max_site_distance, np))));
+    if(options.weights.empty())
+      construct(metric, sites, chain);
+    else
+      construct(metric, sites, SVp::site_weight_map(CGAL::make_property_map(options.weights), chain));
+  }
+
+CGAL_SURFACE_VORONOI_DEPRECATED_END
+
+  /// \cond SKIP_IN_MANUAL
+  Surface_voronoi_diagram(Surface_voronoi_diagram&&) = default;
+  Surface_voronoi_diagram& operator=(Surface_voronoi_diagram&&) = default;
+  Surface_voronoi_diagram(const Surface_voronoi_diagram&) = delete;
+  Surface_voronoi_diagram& operator=(const Surface_voronoi_diagram&) = delete;
+  /// \endcond
+
+  /// whether the `callback` named parameter stopped the construction; a cancelled diagram
+  /// keeps its sites but has no cells (no site owns anything, every cell area is 0)
+  bool is_cancelled() const { return m_data.cancelled; }
+
+  /// \name Sites
+  /// @{
+  /// the number of sites
+  std::size_t number_of_sites() const { return m_data.sites.size(); }
+  /// the location of site `i` (its face and barycentric coordinates)
+  /// \pre `i < number_of_sites()`
+  Face_location site_location(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return Face_location(m_data.mesh->face_handles[m_data.sites[i].face], m_data.sites[i].barycentric);
+  }
+  /// the point of site `i`
+  /// \pre `i < number_of_sites()`
+  Point_3 site_point(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return to_point(m_data.mesh->point_at(m_data.sites[i].face, m_data.sites[i].barycentric));
+  }
+  /// the power weight of site `i`
+  /// \pre `i < number_of_sites()`
+  double site_weight(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return m_data.sites[i].weight;
+  }
+  /// with `Coincident_sites::MERGE`, the site whose cell site `i` was merged into, else `no_site`
+  /// \pre `i < number_of_sites()`
+  std::size_t merged_into(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return m_data.merged_into[i];
+  }
+  /// @}
+
+  /// \name Queries
+  /// @{
+  /// the site whose cell contains the point; ties go to the lower site index; `no_site`
+  /// where no site reaches
+  /// \pre `l.first` is a face of the mesh
+  std::size_t site_of(const Face_location& l) const
+  {
+    if(m_data.cancelled) return no_site;
+    const std::size_t f = get(m_data.mesh->face_index, l.first);
+    std::size_t best = no_site;
+    double best_value = 0;
+    for(const auto& x : m_data.candidates[f])
+    {
+      const double v = l.second[0] * x.value[0] + l.second[1] * x.value[1] + l.second[2] * x.value[2];
+      if(best == no_site || v < best_value || (v == best_value && x.site < best))
+      {
+        best = x.site;
+        best_value = v;
+      }
+    }
+    return best;
+  }
+
+  /// the site owning vertex `v` of the mesh (ties to the lower index), `no_site` if none
+  std::size_t site_of(vertex_descriptor v) const
+  {
+    return m_data.cancelled ? no_site : m_data.vertex_site[get(m_data.mesh->vertex_index, v)];
+  }
+
+  /// the area of the cell of site `i`
+  /// \pre `i < number_of_sites()`
+  double cell_area(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return m_data.cell_area[i];
+  }
+  /// the number of connected pieces of the cell of site `i` (1 for a good cell, 0 if empty)
+  /// \pre `i < number_of_sites()`
+  std::size_t number_of_pieces(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return m_data.cell_pieces[i];
+  }
+  /// the sites whose cells share a boundary segment with the cell of `i`, ascending
+  /// \pre `i < number_of_sites()`
+  const std::vector<std::size_t>& neighbors(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return m_data.neighbors[i];
+  }
+  /// the area no site reaches (components without sites, regions closed off by breaklines)
+  double unreached_area() const { return m_data.statistics.unreached_area; }
+  /// the number of faces no site reaches
+  std::size_t number_of_unreached_faces() const { return m_data.statistics.unreached_faces; }
+  /// the area of the whole surface
+  double surface_area() const { return m_data.mesh->total_area; }
+  /// what the construction did
+  const Surface_voronoi::Diagram_statistics& statistics() const { return m_data.statistics; }
+  /// @}
+
+  /// \name Cell measures
+  /// @{
+  /// the area-weighted centroids of all cells in space (not on the surface), in site order;
+  /// the site's own point for an empty cell (computed once, on the first call)
+  const std::vector<Point_3>& cell_centroids() const
+  {
+    if(m_centroids.size() != number_of_sites())
+    {
+      m_centroids.clear();
+      for(const Surface_voronoi::internal::Point_d& p : Surface_voronoi::internal::cell_centroids(m_data))
+        m_centroids.push_back(to_point(p));
+    }
+    return m_centroids;
+  }
+
+  /// the area-weighted centroid of the cell of site `i` (see `cell_centroids()`)
+  /// \pre `i < number_of_sites()`
+  Point_3 cell_centroid(std::size_t i) const
+  {
+    CGAL_precondition(i < number_of_sites());
+    return cell_centroids()[i];
+  }
+
+  /// The energy of the diagram, the sum over sites of the integral over their cell of the
+  /// squared distance to the site: exact for embeddings (|E(x) - E(s)|^2 is quadratic on a
+  /// triangle, integrated with the edge-midpoint rule), the integral of the linearly
+  /// interpolated squared distance for lazy metrics. Weights are not subtracted.
+  double energy() const { return Surface_voronoi::internal::energy(m_data); }
+  /// @}
+
+  /// the mesh
+  const TriangleMesh& triangle_mesh() const { return *m_tm; }
+  /// the vertex point map
+  Vertex_point_map vertex_point_map() const { return m_vpm; }
+
+private:
+  Point_3 to_point(const Surface_voronoi::internal::Point_d& p) const
+  {
+    return m_traits.construct_point_3_object()(p.x(), p.y(), p.z());
+  }
+
+  template <class SiteRange, class NamedParameters>
+  void construct(Metric& metric, const SiteRange& sites, const NamedParameters& np)
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    using CGAL::parameters::is_default_parameter;
+    namespace SVi = Surface_voronoi::internal;
+    namespace SVnp = Surface_voronoi::internal_np;
+    const TriangleMesh& tm = *m_tm;
+    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
+    if(&metric.triangle_mesh() != &tm)
+      throw Surface_voronoi::Input_error("the metric was built on another mesh");
+
+    m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+    m_traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    SVi::Stage_times* times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<SVi::Stage_times*>(nullptr));
+    std::function<bool(double)> callback;
+    assign_callback(callback, np, std::integral_constant<bool,
+                    !is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value>());
+    SVi::Stage_timer timer(times);
+
+    m_data.mesh = shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
+    CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
+    CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
+    CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
+
+    // breaklines
+    if(!is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
+      m_data.breaklines = SVi::Breaklines(*m_data.mesh, tm,
+          choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                           CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::edge_descriptor, bool>(false)));
+
+    // sites and their weights
+    const double max_distance = choose_parameter(get_parameter(np, SVnp::max_site_distance),
+                                                 std::numeric_limits<double>::infinity());
+    const SVi::Site_locator<TriangleMesh> locator(tm, *m_data.mesh, max_distance);
+    constexpr bool has_weights = !is_default_parameter<NamedParameters, SVnp::site_weight_map_t>::value;
+    for(const auto& s : sites)
+    {
+      m_data.sites.push_back(locator.locate(s, m_data.sites.size()));
+      m_data.sites.back().weight = weight_of(np, s, m_data.sites.size() - 1, std::integral_constant<bool, has_weights>());
+      CGAL_precondition_msg(std::isfinite(m_data.sites.back().weight), "the weights must be finite");
+    }
+    CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
+    if(m_data.sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+      throw Surface_voronoi::Input_error("too many sites");
+    m_data.merged_into.assign(m_data.sites.size(), no_site);
+    const Surface_voronoi::Coincident_sites policy =
+        choose_parameter(get_parameter(np, SVnp::coincident_sites), Surface_voronoi::Coincident_sites::REJECT);
+    CGAL_USE(policy);
+    for(const auto& pair : SVi::find_coincident_sites(*m_data.mesh, m_data.sites))
+    {
+      CGAL_precondition_msg(policy == Surface_voronoi::Coincident_sites::MERGE, "two sites are at the same surface point");
+      m_data.merged_into[pair.second] = pair.first;
+    }
+
+    SVi::Builder_settings settings;
+    settings.candidates = choose_parameter(get_parameter(np, SVnp::candidate_selection),
+                                           Surface_voronoi::Candidate_selection::PROPAGATION);
+    settings.repair = choose_parameter(get_parameter(np, SVnp::repair_cells), true);
+    settings.max_repair_rounds = choose_parameter(get_parameter(np, SVnp::max_repair_rounds), std::size_t(100));
+    CGAL_precondition_msg(settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
+    settings.has_weights = has_weights;
+    if(callback && !callback(0.05)) { cancel(); return; }
+    compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
+  }
+
+  template <class NamedParameters>
+  static void assign_callback(std::function<bool(double)>& callback, const NamedParameters& np, std::true_type)
+  {
+    callback = CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
+  }
+  template <class NamedParameters>
+  static void assign_callback(std::function<bool(double)>&, const NamedParameters&, std::false_type) {}
+
+  template <class NamedParameters, class Site_description>
+  static double weight_of(const NamedParameters& np, const Site_description& s, std::size_t i, std::true_type)
+  {
+    return Surface_voronoi::internal::site_weight(CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::site_weight_map), s, i);
+  }
+  template <class NamedParameters, class Site_description>
+  static double weight_of(const NamedParameters&, const Site_description&, std::size_t, std::false_type) { return 0.; }
+
+  // The metric's indexed copy of the mesh when it has one built from the same points; else
+  // a copy of the diagram's own.
+  std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric& metric, std::true_type) const
+  {
+    const std::shared_ptr<const Indexed_mesh>& shared = metric.indexed_mesh();
+    if(shared && shared->source_mesh == m_tm && shared->number_of_vertices() == num_vertices(*m_tm)
+       && shared->number_of_faces() == num_faces(*m_tm))
+    {
+      bool same_points = true;
+      for(std::size_t v = 0; v < shared->number_of_vertices() && same_points; ++v)
+        same_points = (Surface_voronoi::internal::to_point_d(get(m_vpm, shared->vertex_handles[v])) == shared->points[v]);
+      if(same_points) return shared;
+    }
+    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm);
+  }
+  std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric&, std::false_type) const
+  {
+    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm);
+  }
+
+  void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
+               const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
+               Surface_voronoi::internal::Stage_timer& timer, std::true_type)
+  {
+    namespace SVi = Surface_voronoi::internal;
+    CGAL_precondition_msg(!is_cancelled_metric(metric), "the embedding was cancelled");
+    m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
+    timer.stop("setup");
+    SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values> builder(m_data, *m_data.embedding, settings, callback, times);
+    if(!builder.run()) cancel();
+  }
+
+  void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
+               const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
+               Surface_voronoi::internal::Stage_timer& timer, std::false_type)
+  {
+    namespace SVi = Surface_voronoi::internal;
+    const SVi::Lazy_values<TriangleMesh, Metric> values(*m_data.mesh, metric, m_data.sites);
+    timer.stop("setup");
+    SVi::Diagram_builder<TriangleMesh, SVi::Lazy_values<TriangleMesh, Metric> > builder(m_data, values, settings, callback, times);
+    if(!builder.run()) cancel();
+  }
+
+  template <class M>
+  static bool is_cancelled_metric(const M& m, decltype(std::declval<const M&>().is_cancelled())* = nullptr) { return m.is_cancelled(); }
+  static bool is_cancelled_metric(...) { return false; }
+
+  void cancel()
+  {
+    m_data.cancelled = true;
+    m_data.clear_cells();
+  }
+
+  const TriangleMesh* m_tm;
+  Vertex_point_map m_vpm;
+  Geom_traits m_traits;
+  Data m_data;
+  mutable std::vector<Point_3> m_centroids;
+};
+
+} // namespace CGAL
+
+#include <CGAL/enable_warnings.h>
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_SURFACE_VORONOI_DIAGRAM_H

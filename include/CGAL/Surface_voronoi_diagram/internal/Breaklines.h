@@ -1,0 +1,92 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The breaklines of a diagram: mesh edges no cell crosses (the named parameter
+// `edge_is_constrained_map`), by global edge index.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_BREAKLINES_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_BREAKLINES_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+class Breaklines
+{
+public:
+  Breaklines() {}
+
+  /// reads the map edge -> bool for every edge of `mesh`
+  template <class TriangleMesh, class EdgeIsConstrainedMap>
+  Breaklines(const Indexed_mesh<TriangleMesh>& mesh, const TriangleMesh& tm, const EdgeIsConstrainedMap& ecm)
+    : m_number_of_vertices(mesh.number_of_vertices())
+  {
+    m_blocked.assign(mesh.number_of_edges(), 0);
+    for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    {
+      auto h = halfedge(mesh.face_handles[f], tm);
+      for(int k = 0; k < 3; ++k, h = next(h, tm))
+        if(get(ecm, edge(h, tm))) m_blocked[mesh.edges[f][k]] = 1;
+    }
+    for(std::size_t e = 0; e < mesh.number_of_edges(); ++e)
+      if(m_blocked[e])
+      {
+        m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
+        ++m_count;
+      }
+  }
+
+  bool empty() const { return m_count == 0; }
+  std::size_t size() const { return m_count; }
+  bool is_blocked(std::size_t edge) const { return !m_blocked.empty() && m_blocked[edge] != 0; }
+
+  /// whether the partition vertices `u` and `w` both lie on one breakline edge of the mesh
+  template <class TriangleMesh>
+  bool joins(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, std::size_t u, std::size_t w) const
+  {
+    if(empty()) return false;
+    const Partition::Vertex& a = partition.vertices[u];
+    const Partition::Vertex& b = partition.vertices[w];
+    auto on_edge = [&](const Partition::Vertex& v, std::size_t e) {
+      if(v.kind == Partition::ON_EDGE) return v.element == e;
+      if(v.kind == Partition::AT_CORNER) return mesh.edge_vertices[e][0] == v.element || mesh.edge_vertices[e][1] == v.element;
+      return false;
+    };
+    if(a.kind == Partition::IN_FACE || b.kind == Partition::IN_FACE) return false;
+    const std::size_t e = (a.kind == Partition::ON_EDGE) ? a.element : (b.kind == Partition::ON_EDGE ? b.element : no_site);
+    if(e != no_site) return is_blocked(e) && on_edge(a, e) && on_edge(b, e);
+    // two corners: the mesh edge joining them, if any
+    const auto it = m_corner_edge.find((std::min)(a.element, b.element) * m_number_of_vertices + (std::max)(a.element, b.element));
+    return it != m_corner_edge.end() && is_blocked(it->second);
+  }
+
+private:
+  std::vector<std::uint8_t> m_blocked;                      // by global edge
+  std::unordered_map<std::size_t, std::size_t> m_corner_edge;   // blocked edges by their sorted vertex pair
+  std::size_t m_number_of_vertices = 0;
+  std::size_t m_count = 0;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_BREAKLINES_H

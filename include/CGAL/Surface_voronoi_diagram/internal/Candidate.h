@@ -1,0 +1,87 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// A candidate of a face: a site whose distance field may win somewhere in the face, with
+// the field's values at the face's three corners. Propagation produces the per-face lists,
+// cutting reads them, stitching places vertices from them.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// A site's field on one face: D = squared distance - weight at the three corners, in the
+/// face's corner order.
+struct Candidate
+{
+  std::uint32_t site;
+  std::array<double, 3> value;
+};
+
+typedef std::vector<std::vector<Candidate> > Candidate_lists;   // one list per face
+
+/// (value, site) compared lexicographically: ties go to the lower site index everywhere,
+/// which is the symbolic perturbation that makes both sides of every edge agree.
+inline bool lexicographically_less(double a, std::uint32_t i, double b, std::uint32_t j)
+{
+  return a < b || (a == b && i < j);
+}
+
+/// whether `b` is below `x` at all three corners, so that `x` cannot win anywhere in the face
+inline bool dominates(const Candidate& b, const Candidate& x)
+{
+  for(int k = 0; k < 3; ++k)
+    if(!lexicographically_less(b.value[k], b.site, x.value[k], x.site))
+      return false;
+  return true;
+}
+
+/// Drops the candidates dominated by another one (they cannot win any area) and sorts by
+/// site, so that cutting does not depend on the order in which candidates arrived.
+inline void clean_candidate_list(std::vector<Candidate>& list)
+{
+  if(list.size() > 1)
+  {
+    std::size_t kept = 0;
+    for(std::size_t a = 0; a < list.size(); ++a)
+    {
+      bool dominated = false;
+      for(std::size_t b = 0; b < list.size() && !dominated; ++b)
+        dominated = (b != a) && dominates(list[b], list[a]);
+      if(!dominated) list[kept++] = list[a];
+    }
+    list.resize(kept);
+    std::sort(list.begin(), list.end(), [](const Candidate& a, const Candidate& b) { return a.site < b.site; });
+  }
+}
+
+/// the values of `site` on face `f`, or null if it is not a candidate there
+inline const double* values_of(const std::vector<Candidate>& list, std::uint32_t site)
+{
+  for(const Candidate& x : list)
+    if(x.site == site) return x.value.data();
+  return nullptr;
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_H

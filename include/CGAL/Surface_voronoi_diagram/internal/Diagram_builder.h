@@ -1,0 +1,225 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The construction of a diagram, stage by stage: propagation (or the RVD's global
+// candidates), cutting, stitching, the connectivity repair, and the per-site summary.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_BUILDER_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_BUILDER_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_components.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
+#include <CGAL/Surface_voronoi_diagram/internal/global_nearest.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
+
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <functional>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+struct Builder_settings
+{
+  Candidate_selection candidates = Candidate_selection::PROPAGATION;
+  bool repair = true;
+  std::size_t max_repair_rounds = 100;
+  bool has_weights = false;
+};
+
+template <class TriangleMesh, class Fields>
+class Diagram_builder
+{
+public:
+  typedef Indexed_mesh<TriangleMesh> Mesh;
+
+  Diagram_builder(Diagram_data<TriangleMesh>& data, const Fields& fields, const Builder_settings& settings,
+                  const std::function<bool(double)>& callback, Stage_times* times)
+    : m_data(data), m_mesh(*data.mesh), m_fields(fields), m_settings(settings), m_callback(callback), m_timer(times)
+  {}
+
+  /// computes the cells; returns false if the callback stopped it
+  bool run()
+  {
+    Diagram_data<TriangleMesh>& d = m_data;
+    const std::size_t n = d.sites.size();
+    std::vector<std::size_t> site_faces(n);
+    for(std::size_t i = 0; i < n; ++i) site_faces[i] = d.sites[i].face;
+    Banned_fields banned(m_mesh.number_of_faces());
+    const bool global_nearest = use_global_nearest();
+    auto is_blocked = [&](std::size_t f, int k) { return d.breaklines.is_blocked(m_mesh.edges[f][k]); };
+    auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
+
+    d.statistics = Diagram_statistics();
+    d.statistics.sites = n;
+    d.statistics.surface_area = m_mesh.total_area;
+
+    Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, is_blocked);
+    if(global_nearest)
+      find_global_nearest(propagation.candidates);
+    else
+      propagation.run();
+    m_timer.stop("propagation");
+    if(!progress(0.4)) return false;
+
+    m_cuts.assign(m_mesh.number_of_faces(), Face_cut());
+    cut_faces(propagation.candidates, nullptr);
+    stitch(m_mesh, propagation.candidates, m_cuts, d.partition);
+    d.statistics.propagation_events = propagation.statistics.events;
+    d.statistics.admitted_fields = propagation.statistics.admitted;
+    m_timer.stop("cutting");
+    if(!progress(0.7)) return false;
+
+    Cell_components components;
+    std::vector<std::size_t> dirty, touched;
+    auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
+    for(std::size_t round = 0;; ++round)
+    {
+      components = cell_components(m_mesh, d.partition, n, blocked_edge);
+      const std::size_t broken = number_of_broken_cells(components);
+      if(round == 0) d.statistics.broken_cells_before_repair = broken;
+      d.statistics.broken_cells = broken;
+      if(broken == 0 || global_nearest || !m_settings.repair || round >= m_settings.max_repair_rounds)
+        break;
+      ban_orphan_pieces(d.sites, d.partition, components, banned, dirty);
+      propagation.repropagate(dirty, is_banned, touched);
+      cut_faces(propagation.candidates, &touched);
+      stitch(m_mesh, propagation.candidates, m_cuts, d.partition);
+      d.statistics.repair_rounds = round + 1;
+      d.statistics.banned_fields = banned.size();
+      if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
+    }
+    d.candidates = std::move(propagation.candidates);
+    summarize(components);
+    m_timer.stop("repair");
+    return progress(1.);
+  }
+
+private:
+  bool progress(double fraction) const { return !m_callback || m_callback(fraction); }
+
+  bool use_global_nearest() const
+  {
+    if(m_settings.candidates != Candidate_selection::GLOBAL_NEAREST) return false;
+    CGAL_precondition_msg((std::is_same<Fields, Embedding_values>::value),
+                          "the restricted Voronoi diagram (GLOBAL_NEAREST) needs an embedding metric");
+    return std::is_same<Fields, Embedding_values>::value;
+  }
+
+  void find_global_nearest(Candidate_lists& candidates) const
+  {
+    find_global_nearest(candidates, std::is_same<Fields, Embedding_values>());
+  }
+  void find_global_nearest(Candidate_lists& candidates, std::true_type) const
+  {
+    global_nearest_candidates(m_mesh, m_fields, m_data.sites.size(), m_settings.has_weights, candidates);
+  }
+  void find_global_nearest(Candidate_lists&, std::false_type) const {}
+
+  void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
+  {
+    const std::size_t count = which ? which->size() : m_cuts.size();
+    for(std::size_t k = 0; k < count; ++k)
+    {
+      const std::size_t f = which ? (*which)[k] : k;
+      m_cuts[f] = candidates[f].empty() ? Face_cut() : Face_cutter(candidates[f]).cut();
+    }
+  }
+
+  void summarize(const Cell_components& components)
+  {
+    Diagram_data<TriangleMesh>& d = m_data;
+    Diagram_statistics& s = d.statistics;
+    const std::size_t n = d.sites.size();
+    d.cell_area.assign(n, 0.);
+    d.cell_pieces.assign(n, 0);
+    for(const Partition::Piece& p : d.partition.pieces)
+    {
+      if(p.site == no_site) s.unreached_area += p.area;
+      else d.cell_area[p.site] += p.area;
+    }
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      d.cell_pieces[i] = components.site_components[i].size();
+      if(d.cell_pieces[i] == 0) ++s.empty_cells;
+      else ++s.cells;
+      s.pieces += d.cell_pieces[i];
+    }
+    std::vector<std::uint8_t> unreached_component(m_mesh.number_of_components, 0);
+    std::size_t total_candidates = 0;
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      total_candidates += d.candidates[f].size();
+      s.max_candidates_per_face = (std::max)(s.max_candidates_per_face, d.candidates[f].size());
+      if(d.candidates[f].empty())
+      {
+        ++s.unreached_faces;
+        unreached_component[m_mesh.face_component[f]] = 1;
+      }
+    }
+    for(auto u : unreached_component) s.unreached_components += u;
+    s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
+    s.welded_vertices = d.partition.welded_vertices;
+    s.inserted_vertices = d.partition.inserted_vertices;
+
+    // vertex owners: the lowest (value, site) among the candidates of the faces around
+    d.vertex_site.assign(m_mesh.number_of_vertices(), no_site);
+    std::vector<double> best(m_mesh.number_of_vertices(), 0.);
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+      for(const Candidate& x : d.candidates[f])
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t v = m_mesh.triangles[f][k];
+          if(d.vertex_site[v] == no_site || x.value[k] < best[v] || (x.value[k] == best[v] && x.site < d.vertex_site[v]))
+          {
+            d.vertex_site[v] = x.site;
+            best[v] = x.value[k];
+          }
+        }
+
+    // neighbours: sites on both sides of a piece edge
+    d.neighbors.assign(n, std::vector<std::size_t>());
+    for_each_piece_adjacency(m_mesh, d.partition, [&](std::size_t p, std::size_t q, std::size_t) {
+      const std::size_t a = d.partition.pieces[p].site, b = d.partition.pieces[q].site;
+      if(a != b && a != no_site && b != no_site) { d.neighbors[a].push_back(b); d.neighbors[b].push_back(a); }
+    });
+    for(std::vector<std::size_t>& list : d.neighbors)
+    {
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+  }
+
+  Diagram_data<TriangleMesh>& m_data;
+  const Mesh& m_mesh;
+  const Fields& m_fields;
+  Builder_settings m_settings;
+  const std::function<bool(double)>& m_callback;
+  Stage_timer m_timer;
+  std::vector<Face_cut> m_cuts;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_BUILDER_H

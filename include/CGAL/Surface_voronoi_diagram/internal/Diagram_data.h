@@ -1,0 +1,78 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Everything a diagram holds once computed. The public class owns one of these and answers
+// queries from it; the outputs read it through `Diagram_access`.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_DATA_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_DATA_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
+
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+template <class TriangleMesh>
+struct Diagram_data
+{
+  std::shared_ptr<const Indexed_mesh<TriangleMesh> > mesh;
+  Breaklines breaklines;
+  std::vector<Site> sites;
+  std::vector<std::size_t> merged_into;          // by site: the site owning its cell, or no_site
+  std::unique_ptr<Embedding_values> embedding;   // embedding metrics only
+  Candidate_lists candidates;                    // after propagation and repair
+  Partition partition;
+  std::vector<double> cell_area;
+  std::vector<std::size_t> cell_pieces;
+  std::vector<std::size_t> vertex_site;          // owner of each mesh vertex
+  std::vector<std::vector<std::size_t> > neighbors;
+  Diagram_statistics statistics;
+  bool cancelled = false;
+
+  /// forgets the cells (a cancelled construction holds none)
+  void clear_cells()
+  {
+    candidates.clear();
+    partition = Partition();
+    cell_area.assign(sites.size(), 0.);
+    cell_pieces.assign(sites.size(), 0);
+    vertex_site.assign(mesh ? mesh->number_of_vertices() : 0, no_site);
+    neighbors.assign(sites.size(), std::vector<std::size_t>());
+    statistics = Diagram_statistics();
+    statistics.sites = sites.size();
+  }
+};
+
+/// The outputs' way into a diagram (`make_arrangement()`, `dual_triangulation()`, `draw()`),
+/// so that the public class exposes no internal type.
+struct Diagram_access
+{
+  template <class Diagram>
+  static const auto& data(const Diagram& diagram) { return diagram.m_data; }
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DIAGRAM_DATA_H

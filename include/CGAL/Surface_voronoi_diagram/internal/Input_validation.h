@@ -1,0 +1,199 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The checks behind `validate_input()` and the diagram's preconditions.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INPUT_VALIDATION_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INPUT_VALIDATION_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/Input_problem.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// A list of problems keeping at most `per_kind` of each kind.
+class Problem_list
+{
+public:
+  Problem_list(std::vector<Input_problem>& problems, std::size_t per_kind) : m_problems(problems), m_per_kind(per_kind) {}
+  void add(Input_problem::Kind kind, std::size_t element, const std::string& message, std::size_t other = 0)
+  {
+    if(m_count[kind]++ < m_per_kind) m_problems.push_back(Input_problem{ kind, element, other, message });
+  }
+  bool has(Input_problem::Kind kind) const { return m_count.count(kind) != 0; }
+
+private:
+  std::vector<Input_problem>& m_problems;
+  std::size_t m_per_kind;
+  std::map<Input_problem::Kind, std::size_t> m_count;
+};
+
+/// reports the faces that are not triangles; returns true if there is none
+template <class TriangleMesh>
+bool find_non_triangles(const TriangleMesh& tm, Problem_list& list)
+{
+  bool ok = true;
+  std::size_t index = 0;
+  for(auto f : faces(tm))
+  {
+    if(CGAL::halfedges_around_face(halfedge(f, tm), tm).size() != 3)
+    {
+      list.add(Input_problem::NOT_A_TRIANGLE, index, "face " + std::to_string(index) + " is not a triangle");
+      ok = false;
+    }
+    ++index;
+  }
+  return ok;
+}
+
+/// The vertex of the first corner of each fan that is not the vertex's first fan, by
+/// merging the corners of faces that share an edge: a manifold vertex has one fan.
+template <class TriangleMesh>
+std::vector<std::size_t> non_manifold_vertices(const Indexed_mesh<TriangleMesh>& mesh)
+{
+  const std::size_t nf = mesh.number_of_faces();
+  Disjoint_sets corners(3 * nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t g = mesh.neighbors[f][k];
+      if(g == Indexed_mesh<TriangleMesh>::none) continue;
+      // local edge k joins corners k and k+1; the same vertices are corners of g
+      for(int c : { k, (k + 1) % 3 })
+      {
+        const int l = mesh.corner_of(g, mesh.triangles[f][c]);
+        if(l >= 0) corners.unite(3 * f + c, 3 * g + l);
+      }
+    }
+  std::vector<std::size_t> fan(mesh.number_of_vertices(), std::size_t(-1)), bad;
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t v = mesh.triangles[f][k];
+      const std::size_t r = corners.find(3 * f + k);
+      if(fan[v] == std::size_t(-1)) fan[v] = r;
+      else if(fan[v] != r && (bad.empty() || bad.back() != v)) bad.push_back(v);
+    }
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+  return bad;
+}
+
+/// non-finite points, faces without area, isolated vertices, non-manifold vertices
+template <class TriangleMesh>
+void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& list)
+{
+  std::vector<std::uint8_t> used(mesh.number_of_vertices(), 0);
+  for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+    for(int c = 0; c < 3; ++c)
+      if(!std::isfinite(mesh.points[v][c]))
+      {
+        list.add(Input_problem::NON_FINITE_POINT, v, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+        break;
+      }
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+  {
+    for(std::size_t v : mesh.triangles[f]) used[v] = 1;
+    if(!(mesh.face_areas[f] > 0) || !std::isfinite(mesh.face_areas[f]))
+      list.add(Input_problem::ZERO_AREA_FACE, f, "face " + std::to_string(f) + " has zero area");
+  }
+  for(std::size_t v = 0; v < used.size(); ++v)
+    if(!used[v]) list.add(Input_problem::ISOLATED_VERTEX, v, "vertex " + std::to_string(v) + " belongs to no face");
+  for(std::size_t v : non_manifold_vertices(mesh))
+    list.add(Input_problem::NON_MANIFOLD_VERTEX, v, "vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans");
+}
+
+/// Pairs (first, later) of sites at the same surface point, each later site paired with the
+/// lowest index of its group, ordered by the later site.
+template <class TriangleMesh>
+std::vector<std::pair<std::size_t, std::size_t> > find_coincident_sites(const Indexed_mesh<TriangleMesh>& mesh,
+                                                                          const std::vector<Site>& sites)
+{
+  std::vector<Point_d> p(sites.size());
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    p[i] = mesh.point_at(sites[i].face, sites[i].barycentric);
+  std::vector<std::size_t> order(sites.size());
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return p[a] < p[b] || (p[a] == p[b] && a < b);
+  });
+  std::vector<std::pair<std::size_t, std::size_t> > pairs;
+  std::size_t first = 0;
+  for(std::size_t k = 1; k < order.size(); ++k)
+  {
+    if(p[order[k]] != p[order[k - 1]]) { first = k; continue; }
+    pairs.emplace_back(order[first], order[k]);
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const std::pair<std::size_t, std::size_t>& a,
+                                           const std::pair<std::size_t, std::size_t>& b) { return a.second < b.second; });
+  return pairs;
+}
+
+// A weight map is keyed either by the sites as the range holds them, or by site index.
+template <class Map, class Site_description>
+double site_weight(const Map& map, const Site_description&, std::size_t index, std::true_type)
+{
+  return static_cast<double>(get(map, static_cast<typename boost::property_traits<Map>::key_type>(index)));
+}
+template <class Map, class Site_description>
+double site_weight(const Map& map, const Site_description& site, std::size_t, std::false_type)
+{
+  return static_cast<double>(get(map, site));
+}
+template <class Map, class Site_description>
+double site_weight(const Map& map, const Site_description& site, std::size_t index)
+{
+  typedef typename boost::property_traits<Map>::key_type Key;
+  return site_weight(map, site, index, std::integral_constant<bool, std::is_integral<Key>::value
+                                                                    && !std::is_integral<Site_description>::value>());
+}
+
+template <class SiteRange, class NamedParameters>
+void check_weights(const SiteRange& sites, const NamedParameters& np, Problem_list& list, std::true_type)
+{
+  const auto& map = CGAL::parameters::get_parameter(np, internal_np::site_weight_map);
+  std::size_t index = 0;
+  for(const auto& s : sites)
+  {
+    if(!std::isfinite(site_weight(map, s, index)))
+      list.add(Input_problem::NON_FINITE_WEIGHT, index, "the weight of site " + std::to_string(index) + " is not finite");
+    ++index;
+  }
+}
+template <class SiteRange, class NamedParameters>
+void check_weights(const SiteRange&, const NamedParameters&, Problem_list&, std::false_type) {}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_INPUT_VALIDATION_H

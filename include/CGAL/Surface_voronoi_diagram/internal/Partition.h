@@ -1,0 +1,83 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The partition of the surface that the pipeline produces and every output reads: convex
+// pieces, each inside one face and owned by one site, with vertices shared across faces.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARTITION_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARTITION_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// the site index of what no site reaches
+constexpr std::size_t no_site = std::size_t(-1);
+
+struct Partition
+{
+  enum Location_kind : std::uint8_t { AT_CORNER, ON_EDGE, IN_FACE };
+  struct Vertex
+  {
+    Point_d point;
+    Location_kind kind;
+    std::size_t element;   // mesh vertex, mesh edge or face
+    double t;              // ON_EDGE: parameter from the edge's lower vertex index
+  };
+  struct Piece
+  {
+    std::size_t face;
+    std::size_t site;      // no_site where no site reaches
+    std::vector<std::size_t> vertices;   // counter-clockwise, as the face
+    double area;
+  };
+
+  std::vector<Vertex> vertices;
+  std::vector<Piece> pieces;                // grouped by face, in face order, sites ascending
+  std::vector<std::size_t> face_begin;      // pieces of face f: [face_begin[f], face_begin[f+1])
+  std::size_t welded_vertices = 0;
+  std::size_t inserted_vertices = 0;
+
+  /// face_begin again after pieces were removed (faces left without a piece get an empty range)
+  void rebuild_face_begin(std::size_t number_of_faces)
+  {
+    face_begin.assign(number_of_faces + 1, pieces.size());
+    for(std::size_t p = pieces.size(); p-- > 0;)
+      face_begin[pieces[p].face] = p;
+    for(std::size_t f = number_of_faces; f-- > 0;)
+      if(face_begin[f] > face_begin[f + 1]) face_begin[f] = face_begin[f + 1];
+  }
+};
+
+/// Removes consecutive repeats from a cyclic vertex list (the last and the first are
+/// consecutive too), as welding leaves them.
+inline void remove_cyclic_repeats(std::vector<std::size_t>& cycle)
+{
+  std::size_t kept = 0;
+  for(std::size_t k = 0; k < cycle.size(); ++k)
+    if(kept == 0 || cycle[kept - 1] != cycle[k]) cycle[kept++] = cycle[k];
+  cycle.resize(kept);
+  while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARTITION_H

@@ -1,0 +1,158 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The value D_i(v) = squared distance(site i, vertex v) - w_i that propagation and cutting
+// work with, for both kinds of metric: embeddings (coordinates read once into a dense array,
+// each site embedded by barycentric interpolation) and lazy metrics (asked on demand, keyed
+// by vertex index when the metric offers it, by vertex descriptor otherwise).
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SITE_FIELDS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SITE_FIELDS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+// Whether a lazy metric offers the index-keyed hook `indexed_squared_distance(i, v)`, which
+// skips the index -> descriptor -> index round trip per value.
+template <class Metric, class = void>
+struct Has_indexed_squared_distance : std::false_type {};
+template <class Metric>
+struct Has_indexed_squared_distance<Metric, decltype(void(std::declval<Metric&>().indexed_squared_distance(std::size_t(0), std::size_t(0))))>
+  : std::true_type {};
+
+// Whether a metric keeps an `Indexed_mesh` of its mesh that the diagram may share.
+template <class Metric, class = void>
+struct Has_indexed_mesh : std::false_type {};
+template <class Metric>
+struct Has_indexed_mesh<Metric, decltype(void(std::declval<const Metric&>().indexed_mesh()))>
+  : std::true_type {};
+
+/// The coordinates of an embedding, read once: one dense row per vertex and per site.
+class Embedding_values
+{
+public:
+  template <class Metric, class TriangleMesh>
+  Embedding_values(const Indexed_mesh<TriangleMesh>& mesh, const Metric& metric, const std::vector<Site>& sites)
+  {
+    m_dimension = metric.dimension();
+    CGAL_precondition_msg(m_dimension > 0, "the embedding has dimension 0");
+    const std::size_t n = mesh.number_of_vertices();
+    m_vertex_coordinates.resize(n * m_dimension);
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      metric.coordinates(mesh.vertex_handles[v], m_vertex_coordinates.data() + v * m_dimension);
+      for(std::size_t k = 0; k < m_dimension; ++k)
+        CGAL_precondition_msg(std::isfinite(m_vertex_coordinates[v * m_dimension + k]),
+                              "the embedding of a vertex is not finite");
+    }
+    m_site_coordinates.assign(sites.size() * m_dimension, 0.);
+    m_weights.resize(sites.size());
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      m_weights[i] = sites[i].weight;
+      for(int k = 0; k < 3; ++k)
+      {
+        const double* x = &m_vertex_coordinates[mesh.triangles[sites[i].face][k] * m_dimension];
+        for(std::size_t c = 0; c < m_dimension; ++c)
+          m_site_coordinates[i * m_dimension + c] += sites[i].barycentric[k] * x[c];
+      }
+    }
+  }
+
+  double value(std::size_t site, std::size_t vertex) const
+  {
+    const double* x = vertex_coordinates(vertex);
+    const double* s = site_coordinates(site);
+    double d = 0;
+    for(std::size_t c = 0; c < m_dimension; ++c)
+    {
+      const double e = x[c] - s[c];
+      d += e * e;
+    }
+    return d - m_weights[site];
+  }
+
+  std::size_t dimension() const { return m_dimension; }
+  const double* site_coordinates(std::size_t i) const { return &m_site_coordinates[i * m_dimension]; }
+  const double* vertex_coordinates(std::size_t v) const { return &m_vertex_coordinates[v * m_dimension]; }
+
+private:
+  std::size_t m_dimension = 0;
+  std::vector<double> m_vertex_coordinates, m_site_coordinates, m_weights;
+};
+
+/// A lazy metric during the construction of one diagram: told the sites once, then asked
+/// per (site, vertex).
+template <class TriangleMesh, class Metric>
+class Lazy_values
+{
+public:
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+
+  Lazy_values(const Indexed_mesh<TriangleMesh>& mesh, Metric& metric, const std::vector<Site>& sites)
+    : m_mesh(mesh), m_metric(metric)
+  {
+    m_weights.resize(sites.size());
+    std::vector<Face_location> locations;
+    locations.reserve(sites.size());
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      m_weights[i] = sites[i].weight;
+      locations.emplace_back(mesh.face_handles[sites[i].face], sites[i].barycentric);
+    }
+    m_metric.set_sites(locations);
+  }
+
+  double value(std::size_t site, std::size_t vertex) const
+  {
+    const double d = squared_distance(site, vertex, Has_indexed_squared_distance<Metric>());
+    if(!(d >= 0) || !std::isfinite(d))
+      throw Numerical_error("the metric returned an invalid squared distance for site " + std::to_string(site));
+    return d - m_weights[site];
+  }
+
+private:
+  double squared_distance(std::size_t site, std::size_t vertex, std::true_type) const
+  {
+    return m_metric.indexed_squared_distance(site, vertex);
+  }
+  double squared_distance(std::size_t site, std::size_t vertex, std::false_type) const
+  {
+    return m_metric.squared_distance(site, m_mesh.vertex_handles[vertex]);
+  }
+
+  const Indexed_mesh<TriangleMesh>& m_mesh;
+  Metric& m_metric;
+  std::vector<double> m_weights;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SITE_FIELDS_H

@@ -1,0 +1,623 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Stitching: the per-face pieces become one consistent partition of the surface. Vertices
+// are named by `Vertex_key`s, and positions are computed once per key from values both
+// faces share, so the two sides of an edge produce the same vertices bit for bit. Exact
+// ties (a Voronoi vertex exactly on a mesh edge or corner, four sites meeting at a point)
+// give one point several keys: those are welded by exact comparison, and vertices that lie
+// on a mesh edge are inserted into every piece edge running along it, so the result has no
+// cracks and no T-junctions.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STITCHING_STITCHER_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STITCHING_STITCHER_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
+#include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Stitching/Vertex_key.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+template <class TriangleMesh>
+class Stitcher
+{
+public:
+  typedef Indexed_mesh<TriangleMesh> Mesh;
+
+  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts)
+  {}
+
+  /// Builds the partition from the candidate lists and the per-face cuts.
+  void run(Partition& out)
+  {
+    m_out = &out;
+    out = Partition();
+    name_vertices();
+    place_vertices();
+    weld_exact_ties();
+    insert_edge_points();
+    weld_coincident_positions();
+    drop_collinear_pieces();
+  }
+
+private:
+  // A vertex id's key, and a face whose candidate list holds every site of the key.
+  struct Origin
+  {
+    Vertex_key key;
+    std::size_t face;
+  };
+  // A bisector crossing already named, grouped by the face that named it.
+  struct Edge_crossing_entry
+  {
+    std::size_t edge;
+    std::uint32_t low_site, high_site;
+    std::size_t id;
+  };
+
+  std::uint32_t site_of(std::size_t f, std::uint32_t candidate) const { return m_candidates[f][candidate].site; }
+
+  Vertex_key key_of(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v) const
+  {
+    switch(v.kind)
+    {
+    case Symbolic_vertex::CORNER:
+      return Vertex_key::mesh_vertex(m_mesh.triangles[f][v.local]);
+    case Symbolic_vertex::EDGE:
+      return Vertex_key::edge_crossing(m_mesh.edges[f][v.local], site_of(f, owner), site_of(f, v.other));
+    default:
+      return Vertex_key::triple_point(f, site_of(f, owner), site_of(f, v.other), site_of(f, v.third));
+    }
+  }
+
+  std::size_t new_id(const Vertex_key& k, std::size_t f)
+  {
+    m_origins.push_back(Origin{ k, f });
+    return m_origins.size() - 1;
+  }
+
+  // The id of a key, seen from face f. Without hashing: corners by mesh vertex; bisector
+  // crossings among those named by the edge's faces (the one processed first names them);
+  // triple points among those of the current face.
+  std::size_t id_of(const Vertex_key& k, std::size_t f)
+  {
+    if(k.kind == Vertex_key::MESH_VERTEX)
+    {
+      std::size_t& id = m_corner_id[static_cast<std::size_t>(k.element)];
+      if(id == no_site) id = new_id(k, f);
+      return id;
+    }
+    if(k.kind == Vertex_key::EDGE_CROSSING)
+    {
+      const std::size_t e = static_cast<std::size_t>(k.element);
+      auto find_in = [&](std::size_t begin, std::size_t end) -> std::size_t {
+        for(std::size_t j = begin; j < end; ++j)
+        {
+          const Edge_crossing_entry& x = m_edge_crossings[j];
+          if(x.edge == e && x.low_site == k.sites[0] && x.high_site == k.sites[1]) return x.id;
+        }
+        return no_site;
+      };
+      for(int l = 0; l < 3; ++l)
+        if(m_mesh.edges[f][l] == e)
+        {
+          const std::size_t g = m_mesh.neighbors[f][l];
+          if(g != Mesh::none && g < f)
+          {
+            const std::size_t id = find_in(m_edge_crossings_begin[g], m_edge_crossings_begin[g + 1]);
+            if(id != no_site) return id;
+          }
+        }
+      std::size_t id = find_in(m_edge_crossings_begin[f], m_edge_crossings.size());
+      if(id != no_site) return id;
+      id = new_id(k, f);
+      m_edge_crossings.push_back(Edge_crossing_entry{ e, k.sites[0], k.sites[1], id });
+      return id;
+    }
+    for(std::size_t id = m_triple_begin; id < m_origins.size(); ++id)
+      if(m_origins[id].key == k) return id;
+    return new_id(k, f);
+  }
+
+  // Step 1: every piece as a list of vertex ids; faces nobody reached are one piece of no site.
+  void name_vertices()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    Partition& out = *m_out;
+    m_corner_id.assign(m_mesh.number_of_vertices(), no_site);
+    m_edge_crossings_begin.assign(nf + 1, 0);
+    m_face_degenerate.assign(nf, 0);
+    out.face_begin.assign(nf + 1, 0);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      out.face_begin[f] = out.pieces.size();
+      m_edge_crossings_begin[f] = m_edge_crossings.size();
+      m_triple_begin = m_origins.size();
+      m_face_degenerate[f] = m_cuts[f].degenerate;
+      if(m_candidates[f].empty())
+      {
+        Partition::Piece p{ f, no_site, {}, 0. };
+        for(int k = 0; k < 3; ++k)
+          p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
+        out.pieces.push_back(std::move(p));
+        continue;
+      }
+      for(const Symbolic_piece& sp : m_cuts[f].pieces)
+      {
+        Partition::Piece p{ f, m_candidates[f][sp.candidate].site, {}, 0. };
+        p.vertices.reserve(sp.vertices.size());
+        for(const Symbolic_vertex& v : sp.vertices)
+          p.vertices.push_back(id_of(key_of(f, sp.candidate, v), f));
+        out.pieces.push_back(std::move(p));
+      }
+    }
+    out.face_begin[nf] = out.pieces.size();
+    m_edge_crossings_begin[nf] = m_edge_crossings.size();
+  }
+
+  const double* values_of(std::size_t f, std::uint32_t site) const { return internal::values_of(m_candidates[f], site); }
+
+  // Step 2: one position per key, computed from the values of its sites in its origin face.
+  void place_vertices()
+  {
+    Partition& out = *m_out;
+    out.vertices.resize(m_origins.size());
+    for(std::size_t id = 0; id < m_origins.size(); ++id)
+    {
+      const Vertex_key& k = m_origins[id].key;
+      const std::size_t f = m_origins[id].face;
+      if(k.kind == Vertex_key::MESH_VERTEX)
+      {
+        out.vertices[id] = Partition::Vertex{ m_mesh.points[k.element], Partition::AT_CORNER, static_cast<std::size_t>(k.element), 0. };
+      }
+      else if(k.kind == Vertex_key::EDGE_CROSSING)
+      {
+        const std::size_t e = static_cast<std::size_t>(k.element);
+        const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
+        const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
+        const double* lo = values_of(f, k.sites[0]);
+        const double* hi = values_of(f, k.sites[1]);
+        const double da = lo[ca] - hi[ca], db = lo[cb] - hi[cb];
+        double t = da / (da - db);
+        t = (std::min)(1., (std::max)(0., t));
+        const Point_d& pa = m_mesh.points[va];
+        const Point_d& pb = m_mesh.points[vb];
+        out.vertices[id] = Partition::Vertex{ pa + t * (pb - pa), Partition::ON_EDGE, e, t };
+      }
+      else
+      {
+        const double* d0 = values_of(f, k.sites[0]);
+        const double* d1 = values_of(f, k.sites[1]);
+        const double* d2 = values_of(f, k.sites[2]);
+        // the barycentric point where the three fields are equal: r1 x r2 of the differences
+        const Vector_d r1(d0[0] - d1[0], d0[1] - d1[1], d0[2] - d1[2]);
+        const Vector_d r2(d0[0] - d2[0], d0[1] - d2[1], d0[2] - d2[2]);
+        const Vector_d c = CGAL::cross_product(r1, r2);
+        Barycentric b = {{ c.x(), c.y(), c.z() }};
+        double s = 0;
+        for(double& x : b) s += x;
+        for(double& x : b) x /= s;
+        // rounding may push the point a hair outside its face: keep it on the face
+        double s2 = 0;
+        for(double& x : b) { x = (std::max)(0., x); s2 += x; }
+        for(double& x : b) x /= s2;
+        out.vertices[id] = Partition::Vertex{ m_mesh.point_at(f, b), Partition::IN_FACE, f, 0. };
+      }
+    }
+    m_representative.resize(m_origins.size());
+    for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
+  }
+
+  // Where a vertex lies, exactly: at a corner, on an edge at parameter c[0], or in a face
+  // with barycentric coordinates c.
+  struct Exact_location
+  {
+    Partition::Location_kind kind;
+    std::size_t element;
+    std::array<Exact_number, 3> c;
+  };
+  struct Exact_location_less
+  {
+    bool operator()(const Exact_location& x, const Exact_location& y) const
+    {
+      if(x.kind != y.kind) return x.kind < y.kind;
+      if(x.element != y.element) return x.element < y.element;
+      for(int k = 0; k < 3; ++k)
+      {
+        if(x.c[k] < y.c[k]) return true;
+        if(y.c[k] < x.c[k]) return false;
+      }
+      return false;
+    }
+  };
+
+  Exact_location exact_location(std::size_t id) const
+  {
+    const Vertex_key& k = m_origins[id].key;
+    const std::size_t f = m_origins[id].face;
+    if(k.kind == Vertex_key::MESH_VERTEX) return Exact_location{ Partition::AT_CORNER, static_cast<std::size_t>(k.element), {} };
+    if(k.kind == Vertex_key::EDGE_CROSSING)
+    {
+      const std::size_t e = static_cast<std::size_t>(k.element);
+      const int ca = m_mesh.corner_of(f, m_mesh.edge_vertices[e][0]), cb = m_mesh.corner_of(f, m_mesh.edge_vertices[e][1]);
+      const double* lo = values_of(f, k.sites[0]);
+      const double* hi = values_of(f, k.sites[1]);
+      const Exact_number da = Exact_number(lo[ca]) - Exact_number(hi[ca]), db = Exact_number(lo[cb]) - Exact_number(hi[cb]);
+      Exact_location l{ Partition::ON_EDGE, e, {} };
+      l.c[0] = da / (da - db);
+      return l;
+    }
+    const double* d0 = values_of(f, k.sites[0]);
+    const double* d1 = values_of(f, k.sites[1]);
+    const double* d2 = values_of(f, k.sites[2]);
+    std::array<Exact_number, 3> r1, r2, b;
+    for(int c = 0; c < 3; ++c)
+    {
+      r1[c] = Exact_number(d0[c]) - Exact_number(d1[c]);
+      r2[c] = Exact_number(d0[c]) - Exact_number(d2[c]);
+    }
+    b[0] = r1[1] * r2[2] - r1[2] * r2[1];
+    b[1] = r1[2] * r2[0] - r1[0] * r2[2];
+    b[2] = r1[0] * r2[1] - r1[1] * r2[0];
+    const Exact_number s = b[0] + b[1] + b[2];
+    for(Exact_number& x : b) x = x / s;
+    int zeros = 0, nonzero = -1;
+    for(int c = 0; c < 3; ++c)
+    {
+      if(CGAL::is_zero(b[c])) ++zeros;
+      else nonzero = c;
+    }
+    if(zeros == 2)
+      return Exact_location{ Partition::AT_CORNER, m_mesh.triangles[f][nonzero], {} };
+    if(zeros == 1)
+    {
+      int z = 0;
+      while(!CGAL::is_zero(b[z])) ++z;
+      // on the local edge opposite corner z: corners z+1 -> z+2 form local edge z+1
+      const int k1 = (z + 1) % 3;
+      const std::size_t e = m_mesh.edges[f][k1];
+      const int cb = (m_mesh.triangles[f][k1] == m_mesh.edge_vertices[e][0]) ? (k1 + 1) % 3 : k1;
+      Exact_location l{ Partition::ON_EDGE, e, {} };
+      l.c[0] = b[cb];
+      return l;
+    }
+    return Exact_location{ Partition::IN_FACE, f, b };
+  }
+
+  // Step 3: around faces where the cutter met an exact tie, vertices at the same exact
+  // location become one (only possible there, and rare: rationals are slow).
+  void weld_exact_ties()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    if(std::find(m_face_degenerate.begin(), m_face_degenerate.end(), 1) == m_face_degenerate.end()) return;
+    Partition& out = *m_out;
+    std::map<Exact_location, std::size_t, Exact_location_less> groups;
+    std::vector<std::uint8_t> seen(m_origins.size(), 0);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      if(!m_face_degenerate[f]) continue;
+      // the degenerate face and its neighbours: a point on a shared edge has keys in both
+      const std::size_t faces_to_scan[4] = { f, m_mesh.neighbors[f][0], m_mesh.neighbors[f][1], m_mesh.neighbors[f][2] };
+      for(std::size_t g : faces_to_scan)
+      {
+        if(g == Mesh::none) continue;
+        for(std::size_t p = out.face_begin[g]; p < out.face_begin[g + 1]; ++p)
+          for(std::size_t id : out.pieces[p].vertices)
+          {
+            if(seen[id]) continue;
+            seen[id] = 1;
+            const Exact_location l = exact_location(id);
+            if(l.kind == Partition::AT_CORNER)
+            {
+              // a corner: represented by the corner's own key
+              const std::size_t cid = id_of(Vertex_key::mesh_vertex(l.element), m_origins[id].face);
+              if(cid >= m_representative.size())
+              {
+                m_representative.push_back(cid);
+                seen.push_back(1);
+                out.vertices.push_back(Partition::Vertex{ m_mesh.points[l.element], Partition::AT_CORNER, l.element, 0. });
+              }
+              m_representative[id] = cid;
+              continue;
+            }
+            auto r = groups.emplace(l, id);
+            if(!r.second)
+              m_representative[id] = r.first->second;
+            else if(l.kind == Partition::ON_EDGE && m_origins[id].key.kind == Vertex_key::TRIPLE_POINT)
+            {
+              // a triple point exactly on a mesh edge: it becomes an edge vertex
+              out.vertices[id].kind = Partition::ON_EDGE;
+              out.vertices[id].element = l.element;
+              out.vertices[id].t = CGAL::to_double(l.c[0]);
+            }
+          }
+      }
+    }
+    for(std::size_t id = 0; id < m_representative.size(); ++id)
+      if(m_representative[id] != id) ++out.welded_vertices;
+    for(Partition::Piece& p : out.pieces)
+    {
+      for(std::size_t& id : p.vertices) id = m_representative[id];
+      remove_cyclic_repeats(p.vertices);
+    }
+    out.pieces.erase(std::remove_if(out.pieces.begin(), out.pieces.end(),
+                                    [](const Partition::Piece& p) { return p.vertices.size() < 3; }),
+                     out.pieces.end());
+    out.rebuild_face_begin(nf);
+  }
+
+  // Step 4: every vertex on a mesh edge goes into the piece edges that run along that edge.
+  void insert_edge_points()
+  {
+    Partition& out = *m_out;
+    // the points of each edge, sorted by parameter, in one flat array
+    struct Edge_point { std::size_t edge; double t; std::size_t id; };
+    std::vector<Edge_point> edge_points;
+    for(std::size_t id = 0; id < out.vertices.size(); ++id)
+      if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
+        edge_points.push_back(Edge_point{ out.vertices[id].element, out.vertices[id].t, id });
+    std::sort(edge_points.begin(), edge_points.end(), [](const Edge_point& a, const Edge_point& b) {
+      return a.edge < b.edge || (a.edge == b.edge && (a.t < b.t || (a.t == b.t && a.id < b.id)));
+    });
+    std::vector<std::uint32_t> points_on_edge(m_mesh.number_of_edges(), 0);
+    for(const Edge_point& x : edge_points) ++points_on_edge[x.edge];
+    auto range_of = [&](std::size_t e) {
+      auto lo = std::lower_bound(edge_points.begin(), edge_points.end(), e,
+                                 [](const Edge_point& x, std::size_t edge) { return x.edge < edge; });
+      return std::make_pair(lo, lo + points_on_edge[e]);
+    };
+    // the parameter of vertex `id` along mesh edge `e`, if it lies on it
+    auto parameter_on = [&](std::size_t id, std::size_t e, double& t) {
+      const Partition::Vertex& v = out.vertices[id];
+      if(v.kind == Partition::AT_CORNER)
+      {
+        if(v.element == m_mesh.edge_vertices[e][0]) { t = 0.; return true; }
+        if(v.element == m_mesh.edge_vertices[e][1]) { t = 1.; return true; }
+      }
+      else if(v.kind == Partition::ON_EDGE && v.element == e)
+      {
+        t = v.t;
+        return true;
+      }
+      return false;
+    };
+    // the vertices strictly inside the piece edge (u, w) lying along mesh edge e, in order
+    auto between = [&](std::size_t u, std::size_t w, std::size_t e, std::vector<std::size_t>& found) {
+      found.clear();
+      double tu, tw;
+      if(!parameter_on(u, e, tu) || !parameter_on(w, e, tw)) return false;
+      const double lo = (std::min)(tu, tw), hi = (std::max)(tu, tw);
+      const auto r = range_of(e);
+      for(auto it = r.first; it != r.second; ++it)
+        if(it->t > lo && it->t < hi && it->id != u && it->id != w) found.push_back(it->id);
+      if(tu > tw) std::reverse(found.begin(), found.end());
+      return true;
+    };
+    std::vector<std::size_t> found, refined;
+    for(Partition::Piece& p : out.pieces)
+    {
+      const std::size_t f = p.face;
+      // a piece whose face has no point on its edges has nothing to receive
+      bool receives = false;
+      for(int le = 0; le < 3; ++le) receives |= points_on_edge[m_mesh.edges[f][le]] > 0;
+      if(!receives) continue;
+      const std::size_t n = p.vertices.size();
+      bool changed = false;
+      refined.clear();
+      for(std::size_t k = 0; k < n; ++k)
+      {
+        const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % n];
+        refined.push_back(u);
+        for(int le = 0; le < 3; ++le)
+        {
+          const std::size_t e = m_mesh.edges[f][le];
+          if(points_on_edge[e] == 0) continue;
+          if(!between(u, w, e, found)) continue;
+          if(!found.empty())
+          {
+            refined.insert(refined.end(), found.begin(), found.end());
+            out.inserted_vertices += found.size();
+            changed = true;
+          }
+          break;
+        }
+      }
+      if(changed) p.vertices = refined;
+    }
+  }
+
+  // Step 5: features smaller than double precision. Vertices whose computed positions are
+  // bit-identical are one vertex (two vertices can only coincide if some face uses both, so
+  // each face is compared on its own); the survivor keeps the most specific location.
+  void weld_coincident_positions()
+  {
+    Partition& out = *m_out;
+    Disjoint_sets welded(out.vertices.size());
+    bool any = false;
+    std::vector<std::size_t> used;
+    const std::size_t nf = out.face_begin.size() - 1;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      used.clear();
+      for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+        used.insert(used.end(), out.pieces[p].vertices.begin(), out.pieces[p].vertices.end());
+      std::sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
+        return out.vertices[a].point < out.vertices[b].point || (out.vertices[a].point == out.vertices[b].point && a < b);
+      });
+      for(std::size_t k = 1; k < used.size(); ++k)
+        if(used[k] != used[k - 1] && out.vertices[used[k]].point == out.vertices[used[k - 1]].point)
+        {
+          const std::size_t a = welded.find(used[k - 1]), b = welded.find(used[k]);
+          if(a == b) continue;
+          // a corner before an edge point before a face point
+          const bool a_first = out.vertices[a].kind < out.vertices[b].kind
+                               || (out.vertices[a].kind == out.vertices[b].kind && a < b);
+          if(a_first) welded.link(b, a); else welded.link(a, b);
+          any = true;
+        }
+    }
+    if(any)
+    {
+      for(std::size_t id = 0; id < welded.size(); ++id)
+        if(welded.find(id) != id) ++out.welded_vertices;
+      for(Partition::Piece& p : out.pieces)
+      {
+        for(std::size_t& id : p.vertices) id = welded.find(id);
+        remove_cyclic_repeats(p.vertices);
+      }
+    }
+    for(Partition::Piece& p : out.pieces)
+      p.area = p.vertices.size() < 3 ? 0. : piece_area(p.vertices);
+  }
+
+  double piece_area(const std::vector<std::size_t>& ids) const
+  {
+    const Partition& out = *m_out;
+    Vector_d s(0., 0., 0.);
+    const Point_d& o = out.vertices[ids[0]].point;
+    for(std::size_t k = 1; k + 1 < ids.size(); ++k)
+      s = s + CGAL::cross_product(out.vertices[ids[k]].point - o, out.vertices[ids[k + 1]].point - o);
+    return 0.5 * std::sqrt(s.squared_length());
+  }
+
+  bool is_collinear_polygon(const std::vector<std::size_t>& ids) const
+  {
+    typedef Exact_predicates_kernel::Point_3 P;
+    auto point = [&](std::size_t id) {
+      const Point_d& p = m_out->vertices[id].point;
+      return P(p[0], p[1], p[2]);
+    };
+    const P a = point(ids[0]);
+    std::size_t k = 1;
+    while(k < ids.size() && point(ids[k]) == a) ++k;
+    if(k == ids.size()) return true;
+    const P b = point(ids[k]);
+    for(std::size_t j = k + 1; j < ids.size(); ++j)
+      if(!CGAL::collinear(a, b, point(ids[j]))) return false;
+    return true;
+  }
+
+  // Pieces left without area by welding are removed; a piece whose corners are collinear
+  // hands its middle vertices to the pieces across its long side.
+  void drop_collinear_pieces()
+  {
+    Partition& out = *m_out;
+    std::vector<std::size_t> degenerate;
+    for(std::size_t k = 0; k < out.pieces.size(); ++k)
+    {
+      const Partition::Piece& p = out.pieces[k];
+      // only a piece without area in double can be exactly collinear
+      if(p.vertices.size() < 3 || (p.area <= 1e-12 * m_mesh.face_areas[p.face] && is_collinear_polygon(p.vertices)))
+        degenerate.push_back(k);
+    }
+    if(degenerate.empty()) return;
+    std::unordered_map<std::uint64_t, std::size_t> edge_owner;   // directed edge -> piece
+    const std::uint64_t nv = out.vertices.size();
+    std::vector<std::uint8_t> dropped(out.pieces.size(), 0);
+    for(std::size_t k : degenerate) dropped[k] = 1;
+    for(std::size_t k = 0; k < out.pieces.size(); ++k)
+    {
+      if(dropped[k]) continue;
+      const auto& v = out.pieces[k].vertices;
+      for(std::size_t j = 0; j < v.size(); ++j)
+        edge_owner[std::uint64_t(v[j]) * nv + v[(j + 1) % v.size()]] = k;
+    }
+    for(std::size_t k : degenerate)
+    {
+      const auto& v = out.pieces[k].vertices;
+      if(v.size() < 3) continue;   // two vertices: the pieces on both sides already share the edge
+      // order the vertices along the line, from the first towards the farthest
+      const Point_d& o = out.vertices[v[0]].point;
+      Vector_d direction(0., 0., 0.);
+      double best = -1;
+      for(std::size_t id : v)
+      {
+        const Vector_d d = out.vertices[id].point - o;
+        if(d.squared_length() > best) { best = d.squared_length(); direction = d; }
+      }
+      auto along = [&](std::size_t id) { return (out.vertices[id].point - o) * direction; };
+      std::vector<std::size_t> sorted(v.begin(), v.end());
+      std::sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) { return along(a) < along(b); });
+      sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+      // every edge (u, w) of the dropped piece: the piece across it, owning (w, u), gets the
+      // vertices strictly between w and u
+      for(std::size_t j = 0; j < v.size(); ++j)
+      {
+        const std::size_t u = v[j], w = v[(j + 1) % v.size()];
+        auto it = edge_owner.find(std::uint64_t(w) * nv + u);
+        if(it == edge_owner.end()) continue;
+        const double tw = along(w), tu = along(u);
+        std::vector<std::size_t> between;
+        for(std::size_t id : sorted)
+          if(id != u && id != w && along(id) > (std::min)(tu, tw) && along(id) < (std::max)(tu, tw)) between.push_back(id);
+        if(between.empty()) continue;
+        if(tw > tu) std::reverse(between.begin(), between.end());
+        auto& q = out.pieces[it->second].vertices;
+        for(std::size_t i = 0; i < q.size(); ++i)
+          if(q[i] == w && q[(i + 1) % q.size()] == u)
+          {
+            q.insert(q.begin() + std::ptrdiff_t(i + 1), between.begin(), between.end());
+            out.inserted_vertices += between.size();
+            break;
+          }
+      }
+    }
+    std::vector<Partition::Piece> kept;
+    kept.reserve(out.pieces.size());
+    for(std::size_t k = 0; k < out.pieces.size(); ++k)
+      if(!dropped[k]) kept.push_back(std::move(out.pieces[k]));
+    out.pieces.swap(kept);
+    out.rebuild_face_begin(out.face_begin.size() - 1);
+  }
+
+  const Mesh& m_mesh;
+  const Candidate_lists& m_candidates;
+  const std::vector<Face_cut>& m_cuts;
+  Partition* m_out = nullptr;
+  std::vector<Origin> m_origins;                      // by vertex id
+  std::vector<std::size_t> m_corner_id;               // by mesh vertex
+  std::vector<Edge_crossing_entry> m_edge_crossings;  // grouped by the face that named them
+  std::vector<std::size_t> m_edge_crossings_begin;
+  std::size_t m_triple_begin = 0;                     // triple points of the current face start here
+  std::vector<std::uint8_t> m_face_degenerate;
+  std::vector<std::size_t> m_representative;          // after weld_exact_ties
+};
+
+/// Builds the partition from the candidate lists and the per-face cuts.
+template <class TriangleMesh>
+void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
+            const std::vector<Face_cut>& cuts, Partition& out)
+{
+  Stitcher<TriangleMesh>(mesh, candidates, cuts).run(out);
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STITCHING_STITCHER_H

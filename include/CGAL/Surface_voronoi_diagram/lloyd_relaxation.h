@@ -1,0 +1,214 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Lloyd relaxation (centroidal Voronoi): every site moves to the centroid of its cell,
+// projected back to the surface, and the diagram is computed again. The metric is built
+// once: no eigen-solve per iteration.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_LLOYD_RELAXATION_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_LLOYD_RELAXATION_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// What `lloyd_relaxation()` did.
+template <class TriangleMesh>
+struct Lloyd_result
+{
+  /// the relaxed sites, as face locations
+  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites;
+  /// the energy (`Surface_voronoi_diagram::energy()`) of the initial diagram and after each iteration
+  std::vector<double> energies;
+  /// sites kept in place because their centroid projected onto another site's point
+  std::size_t kept_in_place = 0;
+  /// whether the `callback` stopped the relaxation; `sites` are then those of the last
+  /// complete iteration
+  bool cancelled = false;
+};
+
+namespace internal {
+
+// Moves back the sites whose new position coincides with another site's: the later site of
+// a pair if it moved, else the earlier one. Positions are computed as the diagram computes
+// them, so that the diagram then sees distinct sites.
+template <class TriangleMesh, class Location>
+std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const TriangleMesh& tm,
+                             std::vector<Location>& sites, const std::vector<Location>& previous)
+{
+  const Site_locator<TriangleMesh> locator(tm, mesh, std::numeric_limits<double>::infinity());
+  std::size_t kept = 0;
+  for(;;)
+  {
+    std::vector<Site> located;
+    located.reserve(sites.size());
+    for(std::size_t i = 0; i < sites.size(); ++i) located.push_back(locator.locate(sites[i], i));
+    const auto pairs = find_coincident_sites(mesh, located);
+    if(pairs.empty()) return kept;
+    auto moved = [&](std::size_t i) { return sites[i].first != previous[i].first || sites[i].second != previous[i].second; };
+    for(const auto& pair : pairs)
+    {
+      const std::size_t k = moved(pair.second) ? pair.second : pair.first;
+      CGAL_assertion(moved(k));   // the previous sites were distinct
+      if(!moved(k)) return kept;
+      sites[k] = previous[k];
+      ++kept;
+    }
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// Lloyd relaxation: from `sites` (face locations of `tm`), each iteration moves every site to
+/// the area-weighted centroid of its cell, projected to the nearest surface point, and builds
+/// the diagram again. For the Euclidean embedding with `GLOBAL_NEAREST` candidates the energy
+/// cannot increase (both steps minimize it); for the other metrics it is reported. An empty
+/// cell keeps its site; a centroid projecting onto another site's point keeps its site. The
+/// projection uses the geometric traits (named parameter `geom_traits`, by default the
+/// kernel of the vertex point map), since it constructs the locations returned.
+///
+/// \param tm the mesh
+/// \param metric the metric, built on `tm`
+/// \param sites the initial sites
+/// \param np an optional sequence of named parameters: those of the diagram's constructor
+///        (they apply to every diagram built) and the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the number of Lloyd steps}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{10}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the fraction of all iterations done; returning `false`
+///       stops the relaxation, which returns the sites of the last complete iteration with
+///       `cancelled` set}
+///     \cgalParamType{a callable `bool(double)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre the preconditions of the diagram's constructor hold for `sites`
+template <class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Lloyd_result<TriangleMesh>
+lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
+                 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites,
+                 const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
+  typedef typename GetVertexPointMap<TriangleMesh, CGAL_NP_CLASS>::const_type VPM;
+  typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
+  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Geom_traits, Primitive> > Tree;
+  typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits> Diagram;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto locate_np = CGAL::parameters::vertex_point_map(vpm).geom_traits(choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
+  const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(10));
+  std::function<bool(double)> callback;
+  if constexpr(!is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::callback_t>::value)
+    callback = get_parameter(np, CGAL::internal_np::callback);
+
+  Tree tree;
+  CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
+  tree.accelerate_distance_queries();
+  const internal::Indexed_mesh<TriangleMesh> mesh(tm, vpm);
+
+  Lloyd_result<TriangleMesh> result;
+  std::vector<Location> previous = sites;
+  for(std::size_t it = 0;; ++it)
+  {
+    result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
+    const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
+    const Diagram diagram = callback ? Diagram(tm, metric, sites, np.callback(inner)) : Diagram(tm, metric, sites, np);
+    if(diagram.is_cancelled())
+    {
+      result.sites = previous;
+      result.cancelled = true;
+      return result;
+    }
+    previous = sites;
+    result.energies.push_back(diagram.energy());
+    if(it == iterations) break;
+    // the centroids projected to the surface, constructed with the geometric traits: these
+    // are the locations the caller receives
+    std::vector<typename Diagram::Point_3> moved;
+    const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(centroids[i], tree, tm, locate_np);
+      moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));
+      sites[i] = l;
+    }
+    // two centroids projecting to one point would make coincident sites: keep the later in place
+    std::vector<std::size_t> order(sites.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return moved[a] < moved[b] || (moved[a] == moved[b] && a < b); });
+    for(std::size_t k = 1; k < order.size(); ++k)
+      if(moved[order[k]] == moved[order[k - 1]])
+      {
+        sites[order[k]] = diagram.site_location(order[k]);
+        ++result.kept_in_place;
+      }
+  }
+  result.sites = sites;
+  return result;
+}
+
+CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
+/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
+/// \deprecated use the named parameters `number_of_iterations` and those of the diagram
+template <class TriangleMesh, class Metric>
+CGAL_DEPRECATED_MSG("use the named parameters number_of_iterations and those of the diagram")
+Lloyd_result<TriangleMesh>
+lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
+                 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites,
+                 std::size_t iterations, const Diagram_options& options = Diagram_options())
+{
+  namespace SVp = Surface_voronoi::parameters;
+  const auto np = SVp::candidate_selection(options.candidates, SVp::repair_cells(options.repair,
+                  SVp::max_repair_rounds(options.max_repair_rounds, SVp::max_site_distance(options.max_site_distance,
+                  CGAL::parameters::number_of_iterations(iterations)))));
+  if(options.weights.empty())
+    return lloyd_relaxation(tm, metric, std::move(sites), np);
+  return lloyd_relaxation(tm, metric, std::move(sites), SVp::site_weight_map(CGAL::make_property_map(options.weights), np));
+}
+CGAL_SURFACE_VORONOI_DEPRECATED_END
+
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_LLOYD_RELAXATION_H
