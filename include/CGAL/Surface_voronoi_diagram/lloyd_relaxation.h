@@ -50,8 +50,8 @@ struct Lloyd_result
   std::vector<double> energies;
   /// sites kept in place because their centroid projected onto another site's point
   std::size_t kept_in_place = 0;
-  /// whether the `callback` stopped the relaxation; `sites` are then those of the last
-  /// complete iteration
+  /// whether the `callback` stopped the relaxation; `sites` are then those reached by the
+  /// iterations completed
   bool cancelled = false;
 };
 
@@ -110,8 +110,8 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called with the fraction of all iterations done; returning `false`
-///       stops the relaxation, which returns the sites of the last complete iteration with
-///       `cancelled` set}
+///       stops the relaxation, which returns the sites reached by the iterations completed
+///       (their energy not computed) with `cancelled` set}
 ///     \cgalParamType{a callable `bool(double)`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
@@ -155,7 +155,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     const Diagram diagram = callback ? Diagram(tm, metric, sites, np.callback(inner)) : Diagram(tm, metric, sites, np);
     if(diagram.is_cancelled())
     {
-      result.sites = previous;
+      result.sites = sites;
       result.cancelled = true;
       return result;
     }
