@@ -28,8 +28,8 @@
 #include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/internal/spectral/cotangent_laplacian.h>
-#include <CGAL/Surface_voronoi_diagram/internal/spectral/generalized_eigensolver.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 
 #include <CGAL/IO/OFF.h>
@@ -594,19 +594,18 @@ struct Embedding_time
 Embedding_time time_embedding(const Mesh& mesh, std::size_t d, int runs)
 {
   Embedding_time best;
-  SV::Biharmonic_options o;
-  o.dimension = d;
   for(int r = 0; r < runs; ++r)
   {
+    SV::internal::Stage_times times;   // the library's internal timing hook
     const Clock::time_point t0 = Clock::now();
-    Biharmonic e(mesh, o);
+    Biharmonic e(mesh, SV::parameters::embedding_dimension(d, SV::parameters::stage_times(&times)));
     const double total = seconds_since(t0);
     if(!(total >= best.total))
     {
       best.total = total;
-      best.assembly = e.assembly_seconds();
-      best.solve = e.solve_seconds();
-      best.operations = e.number_of_solver_operations();
+      best.assembly = times["assembly"];
+      best.solve = times["solve"];
+      best.operations = long(times.counts["eigen_operations"]);
     }
   }
   return best;
@@ -751,7 +750,8 @@ std::vector<double> time_library_solver(const Spectral_problem& p, int runs)
       if(!(t >= factor)) factor = t;
     }
     const Clock::time_point t0 = Clock::now();
-    SV::internal::Eigen_solve_result res = SV::internal::smallest_generalized_eigenpairs<Solver>(p.L, p.M, p.nev);
+    SV::internal::Eigen_solve_result res =
+        SV::internal::smallest_generalized_eigenpairs<CGAL::Eigen_solver_traits<Solver> >(p.L, p.M, p.nev);
     const double t = seconds_since(t0);
     if(!(t >= total))
     {
@@ -907,15 +907,15 @@ void section_solvers(const Settings& s, const Named_mesh& m20k)
 template <class Metric>
 std::vector<double> time_diagram(const Mesh& mesh, Metric& metric, const std::vector<Location>& sites)
 {
-  SV::Diagram_options options;
+  SV::internal::Stage_times times;   // the library's internal timing hook
   const Clock::time_point t0 = Clock::now();
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options);
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, SV::parameters::stage_times(&times));
   const double construction = seconds_since(t0);
   const Clock::time_point t1 = Clock::now();
   const auto arrangement = SV::IO::arrangement_for_PLY(vd);
   const double output = seconds_since(t1);
   const SV::Diagram_statistics& st = vd.statistics();
-  return { construction, st.propagation_seconds, st.cutting_seconds, st.repair_seconds, output,
+  return { construction, times["propagation"], times["cutting"], times["repair"], output,
            st.mean_candidates_per_face, double(st.broken_cells_before_repair), double(st.repair_rounds),
            double(st.unreached_faces), double(num_faces(arrangement)) };
 }
@@ -1013,9 +1013,7 @@ void section_sites(const Settings& s, const Named_mesh& m20k, Measured& measured
       {
         if(metric_kind == 0)
         {
-          SV::Biharmonic_options o;
-          o.dimension = 10;
-          biharmonic.reset(new Biharmonic(mesh, o));
+          biharmonic.reset(new Biharmonic(mesh, SV::parameters::embedding_dimension(10)));
         }
         else
           euclidean.reset(new Euclidean(mesh));

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
@@ -168,9 +169,7 @@ public:
     const std::size_t restarts = choose_parameter(get_parameter(np, SVnp::max_eigen_solver_restarts), std::size_t(1000));
     Surface_voronoi::internal::Stage_times* times =
         choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::internal::Stage_times*>(nullptr));
-    std::function<bool(double)> callback;
-    assign_callback(callback, np, std::integral_constant<bool,
-                    !is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value>());
+    const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
     compute(tm, vpm, dimension, tolerance, restarts, callback, times);
   }
 
@@ -265,14 +264,6 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   /// \endcond
 
 private:
-  template <class NamedParameters>
-  static void assign_callback(std::function<bool(double)>& callback, const NamedParameters& np, std::true_type)
-  {
-    callback = CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
-  }
-  template <class NamedParameters>
-  static void assign_callback(std::function<bool(double)>&, const NamedParameters&, std::false_type) {}
-
   void compute(const TriangleMesh& tm, const Vertex_point_map& vpm, std::size_t dimension, double tolerance,
                std::size_t restarts, const std::function<bool(double)>& callback,
                Surface_voronoi::internal::Stage_times* times)
@@ -314,6 +305,7 @@ private:
       return;
     }
     timer.stop("solve");
+    if(times) times->counts["eigen_operations"] += double(r.operations);
 
     m_all_eigenvalues = r.eigenvalues;
     const double lambda_first = r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes)];

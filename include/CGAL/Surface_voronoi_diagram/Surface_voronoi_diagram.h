@@ -31,6 +31,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_builder.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
@@ -394,9 +395,7 @@ private:
     m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     m_traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
     SVi::Stage_times* times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<SVi::Stage_times*>(nullptr));
-    std::function<bool(double)> callback;
-    assign_callback(callback, np, std::integral_constant<bool,
-                    !is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value>());
+    const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
     SVi::Stage_timer timer(times);
 
     m_data.mesh = shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
@@ -444,14 +443,6 @@ private:
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }
-
-  template <class NamedParameters>
-  static void assign_callback(std::function<bool(double)>& callback, const NamedParameters& np, std::true_type)
-  {
-    callback = CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
-  }
-  template <class NamedParameters>
-  static void assign_callback(std::function<bool(double)>&, const NamedParameters&, std::false_type) {}
 
   template <class NamedParameters, class Site_description>
   static double weight_of(const NamedParameters& np, const Site_description& s, std::size_t i, std::true_type)

@@ -20,7 +20,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 
@@ -137,9 +137,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   const auto locate_np = CGAL::parameters::vertex_point_map(vpm).geom_traits(choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
   const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(10));
-  std::function<bool(double)> callback;
-  if constexpr(!is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::callback_t>::value)
-    callback = get_parameter(np, CGAL::internal_np::callback);
+  const std::function<bool(double)> callback = internal::callback_of(np);
 
   Tree tree;
   CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));

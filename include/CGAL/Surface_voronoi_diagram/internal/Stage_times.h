@@ -27,10 +27,12 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-/// seconds per stage, added up over every call that was given this object
+/// seconds per stage, added up over every call that was given this object, and counts of
+/// work (such as the eigen-solver's operator applications)
 struct Stage_times
 {
   std::map<std::string, double> seconds;
+  std::map<std::string, double> counts;
   double operator[](const std::string& stage) const
   {
     const auto it = seconds.find(stage);
