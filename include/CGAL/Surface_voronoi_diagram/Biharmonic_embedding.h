@@ -52,8 +52,10 @@ namespace CGAL {
 
 namespace Surface_voronoi {
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use the named parameters `embedding_dimension`, `eigen_tolerance` and
-/// `max_eigen_solver_restarts` of `CGAL::Biharmonic_embedding`.
+/// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`
+/// (for `dimension`), `Surface_voronoi::parameters::eigen_tolerance` (for `tolerance`) and
+/// `Surface_voronoi::parameters::max_eigen_solver_restarts` (for `max_iterations`) of
+/// `CGAL::Biharmonic_embedding`.
 struct CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
 Biharmonic_options
 {
@@ -68,11 +70,19 @@ Biharmonic_options
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 ///
-/// The biharmonic embedding of a triangle mesh, computed once at construction: the metric of
-/// the reference paper \cgalCite{cgal:xwz-svdm-22}. The squared distance between two points
-/// is their truncated biharmonic distance; it is about twenty times smaller than the squared
-/// length of a path between them on a unit-size mesh, so power weights are given in these
-/// squared units (see `Surface_voronoi::weight_for_squared_length()`).
+/// The biharmonic embedding of a triangle mesh \cgalCite{cgal:lrf-bd-10}, computed once at
+/// construction: the metric of the reference paper \cgalCite{cgal:bddvd}. Vertex \f$ v \f$ is
+/// embedded at \f$ (\phi_1(v)/\lambda_1, \dots, \phi_d(v)/\lambda_d) \f$, where
+/// \f$ L \phi_k = \lambda_k M \phi_k \f$ are the \f$ d \f$ smallest non-zero eigenpairs of the
+/// cotangent Laplacian (one zero eigenvalue per connected component is skipped), so that the
+/// squared Euclidean distance of two embedded points is their truncated squared biharmonic
+/// distance.
+///
+/// <b>Units.</b> The embedding scales like the mesh, but its squared distances are about an
+/// order of magnitude smaller than squared lengths, by a ratio that depends on the mesh and on
+/// \f$ d \f$ (0.087 to 0.100 on the bundled lampshade with \f$ d = 10 \f$). Power weights are
+/// in these squared units: `Surface_voronoi::weight_for_squared_length()` converts a squared
+/// length.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;
@@ -91,6 +101,7 @@ class Biharmonic_embedding
 public:
   /// \name Types
   /// @{
+
   /// the mesh type
   typedef TriangleMesh Triangle_mesh;
   /// `Surface_voronoi::Embedding_tag`
@@ -99,13 +110,16 @@ public:
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   /// a face of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  /// the vertex point map
+  /// the vertex point map: `VertexPointMap`, or by default the mesh's internal
+  /// `CGAL::vertex_point` map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
-  /// the geometric traits
+  /// the geometric traits: `GeomTraits`, or by default the kernel of the points of
+  /// `Vertex_point_map` (the embedding itself is computed in `double`)
   typedef typename Default::Get<GeomTraits,
             typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type Geom_traits;
-  /// the linear algebra traits
+  /// the linear algebra traits: `LA`, or by default `CGAL::Eigen_solver_traits` over
+  /// `Eigen::SimplicialLDLT`
   typedef typename Default::Get<LA, Surface_voronoi::internal::Default_eigen_LA>::type Linear_algebra_traits;
   /// a point in a face: the face and barycentric coordinates
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
@@ -144,8 +158,9 @@ public:
   ///     \cgalParamDefault{1000}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{callback}
-  ///     \cgalParamDescription{called with the fraction of the work done (in [0, 1]); returning
-  ///       `false` stops the computation, and the embedding is then `is_cancelled()`}
+  ///     \cgalParamDescription{called from time to time with the fraction of the work done (in
+  ///       [0, 1]) for progress reports; returning `false` stops the computation, which returns
+  ///       normally: the embedding is then `is_cancelled()` and must not be given to a diagram}
   ///     \cgalParamType{a callable `bool(double)`}
   ///     \cgalParamDefault{none}
   ///   \cgalParamNEnd
@@ -174,8 +189,10 @@ public:
   }
 
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-  /// \deprecated Use the named parameters `embedding_dimension`, `eigen_tolerance` and
-  /// `max_eigen_solver_restarts`.
+  /// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`,
+  /// `Surface_voronoi::parameters::eigen_tolerance` and
+  /// `Surface_voronoi::parameters::max_eigen_solver_restarts` instead of
+  /// `Surface_voronoi::Biharmonic_options`.
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
   Biharmonic_embedding(const TriangleMesh& tm, const Surface_voronoi::Biharmonic_options& options,
@@ -198,6 +215,7 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
 
   /// \name SurfaceVoronoiEmbedding
   /// @{
+
   /// the mesh the embedding was computed on
   const Triangle_mesh& triangle_mesh() const { return *m_mesh->source_mesh; }
 

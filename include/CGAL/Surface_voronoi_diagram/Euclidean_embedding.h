@@ -10,7 +10,7 @@
 // Author(s) : The Surface_voronoi_diagram authors
 //
 // The identity embedding (x, y, z): with propagation it is SurfaceVoronoi's EDBVD baseline
-// (\cgalCite{cgal:xwz-svdm-22}), with every site in every face the classic restricted
+// (\cgalCite{cgal:xwx-svdm-22}), with every site in every face the classic restricted
 // Voronoi diagram (RVD).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_EUCLIDEAN_EMBEDDING_H
@@ -30,8 +30,11 @@ namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// The Euclidean embedding: every vertex is embedded at its own position, so squared
-/// distances, and power weights, are squared lengths.
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// distances, and power weights, are squared lengths. With the diagram's propagation it is
+/// SurfaceVoronoi's Euclidean variant (EDBVD) \cgalCite{cgal:xwx-svdm-22}; with
+/// `Candidate_selection::GLOBAL_NEAREST` it gives the classic restricted Voronoi diagram (RVD).
+/// Coordinates are read as `double`, whatever the kernel.
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points; default:
 ///         the mesh's internal `CGAL::vertex_point` map
 /// \cgalModels `SurfaceVoronoiEmbedding`
@@ -39,18 +42,33 @@ template <class TriangleMesh, class VertexPointMap = Default>
 class Euclidean_embedding
 {
 public:
+  /// \name Types
+  /// @{
+
   /// the mesh type
   typedef TriangleMesh Triangle_mesh;
   /// `Embedding_tag`
   typedef Embedding_tag Metric_category;
   /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  /// the vertex point map
+  /// the vertex point map: `VertexPointMap`, or by default the mesh's internal
+  /// `CGAL::vertex_point` map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
+  /// @}
 
-  /// the embedding of `tm`; named parameter: `vertex_point_map` (default: the mesh's
-  /// internal point map). `tm` must stay alive while the embedding is used.
+  /// The embedding of `tm`, which must stay alive while the embedding is used.
+  ///
+  /// \param tm the mesh
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`Vertex_point_map`}
+  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Euclidean_embedding(const TriangleMesh& tm,
                                const NamedParameters& np = CGAL::parameters::default_values())
@@ -59,10 +77,13 @@ public:
                                                get_const_property_map(CGAL::vertex_point, tm)))
   {}
 
+  /// \name SurfaceVoronoiEmbedding
+  /// @{
+
   /// the mesh the embedding belongs to
   const Triangle_mesh& triangle_mesh() const { return *m_tm; }
 
-  /// 3
+  /// returns 3
   std::size_t dimension() const { return 3; }
 
   /// writes the three coordinates of `v` to `out`
@@ -75,6 +96,7 @@ public:
     *out++ = CGAL::to_double(p.z());
     return out;
   }
+  /// @}
 
 private:
   const TriangleMesh* m_tm;

@@ -53,7 +53,8 @@ namespace Surface_voronoi {
 /// surface: two sides of a thin shell are as far apart as the path around the rim.
 ///
 /// Accuracy depends on the resolution: with fewer than about 10 vertices per site the cells
-/// become coarse (see `refine_for_sites()`).
+/// become coarse (see `refine_for_sites()`). Fast marching on triangulated domains follows
+/// Kimmel and Sethian \cgalCite{cgal:ks-cgpm-98}.
 ///
 /// <b>One diagram at a time.</b> The fronts are state: `set_sites()` starts them afresh.
 /// A diagram built with the metric calls `set_sites()` in its constructor, asks distances
@@ -61,7 +62,7 @@ namespace Surface_voronoi {
 /// queried (`distance()`), destroyed, or given to another diagram (which starts it afresh).
 /// Copies share no state: a copy marches its own fronts.
 ///
-/// \tparam TriangleMesh a model of `FaceListGraph`
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points; default:
 ///         the mesh's internal `CGAL::vertex_point` map
 ///
@@ -74,21 +75,39 @@ class Geodesic_metric
   typedef internal::Local_fast_marching<TriangleMesh> Marching;
 
 public:
+  /// \name Types
+  /// @{
+
   /// the mesh type
   typedef TriangleMesh Triangle_mesh;
   /// `Lazy_metric_tag`
   typedef Lazy_metric_tag Metric_category;
   /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  /// the vertex point map
+  /// the vertex point map: `VertexPointMap`, or by default the mesh's internal
+  /// `CGAL::vertex_point` map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
   /// a point in a face: the face and barycentric coordinates
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  /// @}
 
-  /// Reads the mesh (it must stay alive while the metric is used). Named parameter:
-  /// `vertex_point_map` (default: the mesh's internal point map).
-  /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than 2^32 - 1 vertices
+  /// Reads the mesh, which must stay alive while the metric is used; no distance is computed
+  /// before `set_sites()`.
+  ///
+  /// \param tm the mesh
+  /// \param np an optional sequence of named parameters among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+  ///     \cgalParamType{`Vertex_point_map`}
+  ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than
+  ///      \f$ 2^{32} - 1 \f$ vertices and faces
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Geodesic_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
   {

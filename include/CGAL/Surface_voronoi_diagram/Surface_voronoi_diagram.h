@@ -64,14 +64,24 @@ namespace CGAL {
 /// of `SurfaceVoronoiEmbedding` (per-vertex coordinates, such as `CGAL::Biharmonic_embedding`)
 /// or of `SurfaceVoronoiLazyMetric` (distances computed on demand, such as
 /// `Surface_voronoi::Geodesic_metric`), by SurfaceVoronoi's propagate-and-cut
-/// \cgalCite{cgal:xwz-svdm-22}. The diagram is computed at construction, checked (and
+/// \cgalCite{cgal:xwx-svdm-22} with the biharmonic embedding as default metric
+/// \cgalCite{cgal:bddvd}. The diagram is computed at construction, checked (and
 /// repaired) so that every cell is one connected region, and then answers queries; the
 /// outputs (`Surface_voronoi::make_arrangement()`, `Surface_voronoi::dual_triangulation()`,
-/// `CGAL::draw()`) read it.
+/// the viewer `draw()`) read it.
 ///
 /// The diagram keeps a pointer to the mesh, which must stay alive and unchanged while the
 /// diagram is used; it does not use the metric after its construction. It can be moved,
 /// not copied.
+///
+/// <b>Errors.</b> Invalid input (a mesh that is not a valid triangle mesh, faces of zero area,
+/// non-manifold vertices, no sites, coincident sites, non-finite weights) violates a
+/// precondition of the constructor: checked by `CGAL_precondition` in debug builds only.
+/// `Surface_voronoi::validate_input()` checks all of these in every build and names what is
+/// wrong. Exceptions are kept for the checks that protect memory and stay on in every build
+/// (`Surface_voronoi::Input_error`), for a check the caller asks for
+/// (`Surface_voronoi::Site_too_far_error`) and for a numerical failure that valid input can
+/// still meet (`Surface_voronoi::Numerical_error`).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam Metric a model of `SurfaceVoronoiEmbedding` or `SurfaceVoronoiLazyMetric`
@@ -92,18 +102,22 @@ class Surface_voronoi_diagram
 public:
   /// \name Types
   /// @{
+
   /// the mesh type
   typedef TriangleMesh Triangle_mesh;
-  /// the metric type
+  /// the metric type, a model of `SurfaceVoronoiEmbedding` or `SurfaceVoronoiLazyMetric`
   typedef Metric Metric_type;
   /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   /// a face of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  /// the vertex point map
+  /// the vertex point map: `VertexPointMap`, or by default the mesh's internal
+  /// `CGAL::vertex_point` map
   typedef typename Default::Get<VertexPointMap,
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
-  /// the geometric traits
+  /// the geometric traits: `GeomTraits`, or by default the kernel of the points of
+  /// `Vertex_point_map`. The diagram computes in `double` whatever the kernel; the traits
+  /// construct the points it returns (`site_point()`, `cell_centroid()`).
   typedef typename Default::Get<GeomTraits,
             typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type Geom_traits;
   /// the point type of the geometric traits
@@ -112,7 +126,8 @@ public:
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
   /// @}
 
-  /// the index returned where no site reaches
+  /// the index `site_of()` returns where no site reaches, and `merged_into()` for a site that
+  /// was not merged: `std::size_t(-1)`
   static constexpr std::size_t no_site = std::size_t(-1);
 
   /// Computes the diagram.
@@ -133,7 +148,8 @@ public:
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{geom_traits}
-  ///     \cgalParamDescription{an instance of the geometric traits, used to construct returned points}
+  ///     \cgalParamDescription{an instance of the geometric traits, used to construct the points
+  ///       the diagram returns}
   ///     \cgalParamType{`Geom_traits`}
   ///     \cgalParamDefault{a default-constructed `Geom_traits`}
   ///   \cgalParamNEnd
@@ -159,9 +175,11 @@ public:
   ///     \cgalParamDefault{infinity}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{Surface_voronoi::parameters::coincident_sites}
-  ///     \cgalParamDescription{what two sites at the same surface point mean}
+  ///     \cgalParamDescription{what two sites at the same surface point mean: a precondition
+  ///       violation (`REJECT`), or the later site merged into the earlier one (`MERGE`: it keeps
+  ///       its index, owns no area, and `merged_into()` names the site that owns its cell)}
   ///     \cgalParamType{`Surface_voronoi::Coincident_sites`}
-  ///     \cgalParamDefault{`Surface_voronoi::Coincident_sites::REJECT` (a precondition)}
+  ///     \cgalParamDefault{`Surface_voronoi::Coincident_sites::REJECT`}
   ///   \cgalParamNEnd
   ///   \cgalParamSectionEnd
   ///   \cgalParamSectionBegin{Algorithm}
@@ -185,22 +203,28 @@ public:
   ///     \cgalParamExtra{less than 65535}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{callback}
-  ///     \cgalParamDescription{called with the fraction of the work done (in [0, 1]); returning
-  ///       `false` stops the construction, which returns normally: the diagram is then
-  ///       `is_cancelled()` and holds no cells}
+  ///     \cgalParamDescription{called from time to time with the fraction of the work done (in
+  ///       [0, 1]) for progress reports; returning `false` stops the construction, which
+  ///       returns normally: the diagram is then `is_cancelled()` and holds no cells}
   ///     \cgalParamType{a callable `bool(double)`}
   ///     \cgalParamDefault{none}
   ///   \cgalParamNEnd
   ///   \cgalParamSectionEnd
   /// \cgalNamedParamsEnd
   ///
+  /// With an embedding (`SurfaceVoronoiEmbedding`) the constructor reads the coordinates of
+  /// every vertex once; a lazy metric (`SurfaceVoronoiLazyMetric`) is told the sites with
+  /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not
+  /// used after the constructor returns.
+  ///
   /// \pre `tm` is a valid triangle mesh whose faces have positive area and whose vertices are
   ///      manifold; the sites are not empty; with `Coincident_sites::REJECT`, no two sites are
   ///      at the same surface point; the weights are finite. `Surface_voronoi::validate_input()`
   ///      checks all of these and names what is wrong.
   /// \throws Surface_voronoi::Input_error if a site is not on `tm` (a descriptor of another
-  ///         mesh, coordinates that are not numbers) or if `metric` was built on another mesh:
-  ///         these checks protect memory and stay on in every build
+  ///         mesh, coordinates that are not numbers), if `metric.triangle_mesh()` is not `tm`,
+  ///         or if there are \f$ 2^{32} - 1 \f$ sites or more: these checks protect memory and
+  ///         stay on in every build
   /// \throws Surface_voronoi::Site_too_far_error as said for `max_site_distance`
   /// \throws Surface_voronoi::Numerical_error if a lazy metric returns an invalid distance
   template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -214,7 +238,9 @@ public:
   }
 
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-  /// \deprecated Use the named parameters instead of `Surface_voronoi::Diagram_options`.
+  /// \deprecated Use the named parameters instead of `Surface_voronoi::Diagram_options`:
+  /// `site_weight_map` (for `weights`, e.g. `CGAL::make_property_map(weights)`),
+  /// `candidate_selection`, `repair_cells`, `max_repair_rounds` and `max_site_distance`.
   template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
   CGAL_DEPRECATED_MSG("use the named parameters of Surface_voronoi_diagram")
   Surface_voronoi_diagram(const TriangleMesh& tm, Metric& metric, const SiteRange& sites,
@@ -246,6 +272,7 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
 
   /// \name Sites
   /// @{
+
   /// the number of sites
   std::size_t number_of_sites() const { return m_data.sites.size(); }
   /// the location of site `i` (its face and barycentric coordinates)
@@ -280,6 +307,7 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
 
   /// \name Queries
   /// @{
+
   /// the site whose cell contains the point; ties go to the lower site index; `no_site`
   /// where no site reaches
   /// \pre `l.first` is a face of the mesh
@@ -340,6 +368,7 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
 
   /// \name Cell measures
   /// @{
+
   /// the area-weighted centroids of all cells in space (not on the surface), in site order;
   /// the site's own point for an empty cell (computed once, on the first call)
   const std::vector<Point_3>& cell_centroids() const
@@ -368,10 +397,14 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   double energy() const { return Surface_voronoi::internal::energy(m_data); }
   /// @}
 
-  /// the mesh
+  /// \name Access
+  /// @{
+
+  /// the mesh the diagram was built on
   const TriangleMesh& triangle_mesh() const { return *m_tm; }
-  /// the vertex point map
+  /// the vertex point map of the mesh
   Vertex_point_map vertex_point_map() const { return m_vpm; }
+  /// @}
 
 private:
   Point_3 to_point(const Surface_voronoi::internal::Point_d& p) const

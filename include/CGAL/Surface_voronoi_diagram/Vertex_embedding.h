@@ -36,27 +36,38 @@ namespace Surface_voronoi {
 /// ranges are read when a diagram is built; they must hold finite numbers (a precondition),
 /// and a range of another size makes the diagram throw `Input_error`. Squared distances,
 /// and power weights, are in the squared units of these coordinates.
-/// \tparam TriangleMesh a model of `FaceListGraph`
-/// \tparam VertexCoordinatesMap a model of `ReadablePropertyMap` from vertices to ranges
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam VertexCoordinatesMap a model of `ReadablePropertyMap` whose key type is the vertex
+///         descriptor of `TriangleMesh` and whose value type is a random-access range of
+///         numbers convertible to `double`, with a `size()` member
 /// \cgalModels `SurfaceVoronoiEmbedding`
+/// \sa `make_vertex_embedding()`
 template <class TriangleMesh, class VertexCoordinatesMap>
 class Vertex_embedding
 {
 public:
+  /// \name Types
+  /// @{
+
   /// the mesh type
   typedef TriangleMesh Triangle_mesh;
   /// `Embedding_tag`
   typedef Embedding_tag Metric_category;
   /// a vertex of the mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// @}
 
-  /// the embedding of the vertices of `tm` given by `map`, of dimension `dimension`
+  /// the embedding of the vertices of `tm` given by `map`, of dimension `dimension`. Both
+  /// `tm` and what `map` reads must stay alive while the embedding is used.
   /// \pre `dimension >= 1`
   Vertex_embedding(const TriangleMesh& tm, VertexCoordinatesMap map, std::size_t dimension)
     : m_tm(&tm), m_map(map), m_dimension(dimension)
   {
     CGAL_precondition_msg(dimension >= 1, "a vertex embedding needs at least one coordinate");
   }
+
+  /// \name SurfaceVoronoiEmbedding
+  /// @{
 
   /// the mesh the embedding belongs to
   const Triangle_mesh& triangle_mesh() const { return *m_tm; }
@@ -77,6 +88,7 @@ public:
       *out++ = static_cast<double>(c[k]);
     return out;
   }
+  /// @}
 
 private:
   const TriangleMesh* m_tm;
@@ -85,7 +97,8 @@ private:
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
-/// Makes a `Vertex_embedding` from a property map.
+/// Makes a `Vertex_embedding` of dimension `dimension` of the vertices of `tm` from the
+/// property map `map`, deducing the template arguments.
 template <class TriangleMesh, class VertexCoordinatesMap>
 Vertex_embedding<TriangleMesh, VertexCoordinatesMap>
 make_vertex_embedding(const TriangleMesh& tm, VertexCoordinatesMap map, std::size_t dimension)

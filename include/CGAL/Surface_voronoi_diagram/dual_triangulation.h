@@ -9,7 +9,7 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Remeshing by the dual (\cgalCite{cgal:xwz-svdm-22}, 4.7.3): the restricted Delaunay triangulation dual to the
+// Remeshing by the dual (\cgalCite{cgal:bddvd}, 4.7.3): the restricted Delaunay triangulation dual to the
 // diagram, one triangle per Voronoi vertex (a fan of triangles where more than three cells
 // meet), on the sites, oriented with the surface.
 
@@ -37,10 +37,15 @@ namespace Surface_voronoi {
 /// (in site order) and `triangles` one triangle per Voronoi vertex of the arrangement, its
 /// sites in counter-clockwise order seen from the surface's outside (the order of the cells
 /// around the vertex). Where k > 3 cells meet, a fan of k - 2 triangles. Voronoi vertices on
-/// the border of the surface give no triangle.
+/// the border of the surface give no triangle. This is the remeshing of the reference paper
+/// \cgalCite{cgal:bddvd} (section 4.7.3); `CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh()`
+/// turns the soup into a mesh when the function returns `true`.
 /// \tparam Diagram a `CGAL::Surface_voronoi_diagram`
 /// \tparam PointOutputIterator an output iterator accepting `Diagram::Point_3`
 /// \tparam TriangleOutputIterator an output iterator accepting `std::array<std::size_t, 3>`
+/// \param diagram the diagram
+/// \param points receives the points of the sites
+/// \param triangles receives the triangles, as indices of sites
 /// \returns `true` if the soup is a valid polygon mesh (a 2-manifold, possibly with border),
 ///          which is the case when every cell is a disk
 /// \pre `!diagram.is_cancelled()`

@@ -41,7 +41,8 @@ public:
 /// \ingroup PkgSurfaceVoronoiDiagramRef
 /// An input that would make the computation read memory it must not: a site that is not on
 /// the mesh (a descriptor of another mesh, non-finite coordinates), a metric built on
-/// another mesh, a user embedding giving fewer coordinates than its dimension.
+/// another mesh, a `Vertex_embedding` whose map gives a number of coordinates other than its
+/// dimension. These checks stay on in every build.
 class Input_error : public Error
 {
 public:
@@ -77,7 +78,8 @@ public:
 
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
 /// \deprecated Coincident sites are a precondition violation now (see `validate_input()`
-/// and the named parameter `coincident_sites`); nothing throws this any more.
+/// and the named parameter `Surface_voronoi::parameters::coincident_sites`, whose
+/// `Coincident_sites::MERGE` accepts them); nothing throws this any more.
 class CGAL_DEPRECATED_MSG("coincident sites are a precondition; see the named parameter coincident_sites")
 Coincident_sites_error : public Input_error
 {

@@ -39,8 +39,9 @@
 namespace CGAL {
 namespace Surface_voronoi {
 
-/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// \ingroup PkgSurfaceVoronoiDiagramSites
 /// What `lloyd_relaxation()` did.
+/// \tparam TriangleMesh the mesh type of the sites
 template <class TriangleMesh>
 struct Lloyd_result
 {
@@ -87,15 +88,18 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// \ingroup PkgSurfaceVoronoiDiagramSites
 /// Lloyd relaxation: from `sites` (face locations of `tm`), each iteration moves every site to
 /// the area-weighted centroid of its cell, projected to the nearest surface point, and builds
 /// the diagram again. For the Euclidean embedding with `GLOBAL_NEAREST` candidates the energy
 /// cannot increase (both steps minimize it); for the other metrics it is reported. An empty
 /// cell keeps its site; a centroid projecting onto another site's point keeps its site. The
 /// projection uses the geometric traits (named parameter `geom_traits`, by default the
-/// kernel of the vertex point map), since it constructs the locations returned.
+/// kernel of the vertex point map), since it constructs the locations returned. The metric
+/// is built once by the caller: no embedding is computed again per iteration.
 ///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam Metric a model of `SurfaceVoronoiEmbedding` or of `SurfaceVoronoiLazyMetric`
 /// \param tm the mesh
 /// \param metric the metric, built on `tm`
 /// \param sites the initial sites
@@ -103,6 +107,18 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 ///        (they apply to every diagram built) and the ones listed below
 ///
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`, for the
+///       diagrams and for the projection}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of the geometric traits, for the diagrams and for the
+///       projection of the centroids}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type of the vertex point map}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the number of Lloyd steps}
 ///     \cgalParamType{`std::size_t`}
@@ -117,6 +133,7 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \returns the relaxed sites, the energy after each iteration and what was kept in place
 /// \pre the preconditions of the diagram's constructor hold for `sites`
 template <class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Lloyd_result<TriangleMesh>
@@ -187,7 +204,9 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
 
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated use the named parameters `number_of_iterations` and those of the diagram
+/// \deprecated Use `lloyd_relaxation(tm, metric, sites, np)`: the number of iterations is the
+/// named parameter `number_of_iterations`, and the options of the diagram are its named
+/// parameters (see `Surface_voronoi::Diagram_options`).
 template <class TriangleMesh, class Metric>
 CGAL_DEPRECATED_MSG("use the named parameters number_of_iterations and those of the diagram")
 Lloyd_result<TriangleMesh>

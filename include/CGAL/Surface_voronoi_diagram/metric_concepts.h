@@ -22,15 +22,16 @@ namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
-/// `Metric_category` of a model of `SurfaceVoronoiEmbedding`: per-vertex coordinates in R^d.
-/// The embedding of a surface point is the barycentric interpolation of its face's corners,
-/// and per-face cutting of squared distances is exact.
+/// `Metric_category` of a model of `SurfaceVoronoiEmbedding`: per-vertex coordinates in
+/// \f$ \mathbb{R}^d \f$. The embedding of a surface point is the barycentric interpolation of
+/// its face's corners, and per-face cutting of squared distances is exact. A metric whose
+/// `Metric_category` is any other type is used as a `SurfaceVoronoiLazyMetric`.
 struct Embedding_tag {};
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// `Metric_category` of a model of `SurfaceVoronoiLazyMetric`: squared distances between a
 /// site and a vertex, computed on demand, only where the site propagates. Inside a face the
-/// squared distance is interpolated linearly, an approximation (\cgalCite{cgal:xwz-svdm-22},
+/// squared distance is interpolated linearly, an approximation (\cgalCite{cgal:bddvd},
 /// eq. 4-5).
 struct Lazy_metric_tag {};
 

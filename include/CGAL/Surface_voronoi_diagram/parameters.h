@@ -86,38 +86,117 @@ namespace parameters {
   }
 
 #ifdef DOXYGEN_RUNNING
-/// \ingroup PkgSurfaceVoronoiDiagramNamedParameters
-/// \name Named parameters of the package
-/// Each function makes a chain of named parameters holding `value`; the overload with a
-/// second argument appends it to an existing chain (CGAL's chains have no member function
-/// for the package's parameters, so package parameters are added this way or first).
+/// \addtogroup PkgSurfaceVoronoiDiagramNamedParameters
 /// @{
-/// power weights of the sites (`Surface_voronoi_diagram`, `lloyd_relaxation()`, `validate_input()`)
-template <class T> unspecified_type site_weight_map(const T& value);
-/// `Candidate_selection` of the diagram
-template <class T> unspecified_type candidate_selection(const T& value);
-/// whether the diagram repairs cells found in several pieces (`bool`)
-template <class T> unspecified_type repair_cells(const T& value);
-/// the most repair rounds of the diagram (`std::size_t`)
-template <class T> unspecified_type max_repair_rounds(const T& value);
-/// the farthest a site given as a point may be from the surface (`double`)
-template <class T> unspecified_type max_site_distance(const T& value);
-/// the `Coincident_sites` policy of the diagram
-template <class T> unspecified_type coincident_sites(const T& value);
-/// the dimension `d` of `Biharmonic_embedding` (`std::size_t`)
-template <class T> unspecified_type embedding_dimension(const T& value);
-/// the relative tolerance of the eigen-solver of `Biharmonic_embedding` (`double`)
-template <class T> unspecified_type eigen_tolerance(const T& value);
-/// the most restarts of the eigen-solver of `Biharmonic_embedding` (`std::size_t`)
-template <class T> unspecified_type max_eigen_solver_restarts(const T& value);
-/// when `refine_for_sites()` splits edges, relative to the site spacing (`double`)
-template <class T> unspecified_type refinement_trigger_ratio(const T& value);
-/// down to which length `refine_for_sites()` splits, relative to the site spacing (`double`)
-template <class T> unspecified_type refinement_edge_length_ratio(const T& value);
-/// the largest mesh `refine_for_sites()` may make (`std::size_t` vertices)
-template <class T> unspecified_type refinement_max_vertices(const T& value);
-/// an output face -> input face property map (`make_arrangement()`, `insert_sites()`, `refine_for_sites()`)
-template <class T> unspecified_type input_face_map(const T& value);
+
+/// A chain of named parameters holding `value` as `site_weight_map`: the power weights of the
+/// sites, as a readable property map whose key is the sites' type or `std::size_t` (the site
+/// index) and whose value converts to `double`; read by `CGAL::Surface_voronoi_diagram`,
+/// `lloyd_relaxation()` and `validate_input()`.
+template <class T>
+unspecified_type site_weight_map(const T& value);
+/// The chain `chain` with `site_weight_map(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type site_weight_map(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `candidate_selection`: the
+/// `Candidate_selection` of `CGAL::Surface_voronoi_diagram`: propagation, or every globally
+/// nearest site (the restricted Voronoi diagram).
+template <class T>
+unspecified_type candidate_selection(const T& value);
+/// The chain `chain` with `candidate_selection(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type candidate_selection(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `repair_cells`: whether
+/// `CGAL::Surface_voronoi_diagram` repairs cells found in several pieces (`bool`).
+template <class T>
+unspecified_type repair_cells(const T& value);
+/// The chain `chain` with `repair_cells(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type repair_cells(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `max_repair_rounds`: the most repair rounds
+/// of `CGAL::Surface_voronoi_diagram` (`std::size_t`, less than 65535).
+template <class T>
+unspecified_type max_repair_rounds(const T& value);
+/// The chain `chain` with `max_repair_rounds(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type max_repair_rounds(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `max_site_distance`: the farthest a site
+/// given as a point may be from the surface (`double`), for `CGAL::Surface_voronoi_diagram` and
+/// `validate_input()`.
+template <class T>
+unspecified_type max_site_distance(const T& value);
+/// The chain `chain` with `max_site_distance(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type max_site_distance(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `coincident_sites`: the `Coincident_sites`
+/// policy of `CGAL::Surface_voronoi_diagram` and `validate_input()`.
+template <class T>
+unspecified_type coincident_sites(const T& value);
+/// The chain `chain` with `coincident_sites(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type coincident_sites(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `embedding_dimension`: the dimension `d` of
+/// `CGAL::Biharmonic_embedding` (`std::size_t`).
+template <class T>
+unspecified_type embedding_dimension(const T& value);
+/// The chain `chain` with `embedding_dimension(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type embedding_dimension(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `eigen_tolerance`: the relative tolerance of
+/// the eigen-solver of `CGAL::Biharmonic_embedding` (`double`).
+template <class T>
+unspecified_type eigen_tolerance(const T& value);
+/// The chain `chain` with `eigen_tolerance(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type eigen_tolerance(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `max_eigen_solver_restarts`: the most
+/// restarts of the eigen-solver of `CGAL::Biharmonic_embedding` (`std::size_t`).
+template <class T>
+unspecified_type max_eigen_solver_restarts(const T& value);
+/// The chain `chain` with `max_eigen_solver_restarts(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type max_eigen_solver_restarts(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `refinement_trigger_ratio`: the length,
+/// relative to the site spacing, above which `refine_for_sites()` splits edges (`double`).
+template <class T>
+unspecified_type refinement_trigger_ratio(const T& value);
+/// The chain `chain` with `refinement_trigger_ratio(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type refinement_trigger_ratio(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `refinement_edge_length_ratio`: the length,
+/// relative to the site spacing, down to which `refine_for_sites()` splits edges (`double`).
+template <class T>
+unspecified_type refinement_edge_length_ratio(const T& value);
+/// The chain `chain` with `refinement_edge_length_ratio(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type refinement_edge_length_ratio(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `refinement_max_vertices`: the largest number
+/// of vertices `refine_for_sites()` may make (`std::size_t`).
+template <class T>
+unspecified_type refinement_max_vertices(const T& value);
+/// The chain `chain` with `refinement_max_vertices(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type refinement_max_vertices(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `input_face_map`: a writable property map
+/// from output faces to input faces, filled by `make_arrangement()` and `refine_for_sites()`.
+template <class T>
+unspecified_type input_face_map(const T& value);
+/// The chain `chain` with `input_face_map(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type input_face_map(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)

@@ -112,7 +112,7 @@ double squared_length_ratio(const Metric&, double, const NamedParameters&, std::
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// The power weight, in the squared units of `metric`, that corresponds to the squared length
 /// `squared_length` on the mesh. For an embedding, `squared_length` times the mean ratio of
 /// squared embedding distance to squared length between vertices about `sqrt(squared_length)`
@@ -127,7 +127,22 @@ double squared_length_ratio(const Metric&, double, const NamedParameters&, std::
 /// neighbour, where `D` is the distance between the sites: weights beyond the squared
 /// spacing of the sites empty cells.
 ///
-/// Named parameter: `vertex_point_map` of the metric's mesh (default: its internal one).
+/// \tparam Metric a model of `SurfaceVoronoiEmbedding` or of `SurfaceVoronoiLazyMetric`
+/// \param metric the metric
+/// \param squared_length a squared length on the mesh `metric.triangle_mesh()`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of
+///       `metric.triangle_mesh()` (used for embeddings only)}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, metric.triangle_mesh())`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the weight that moves bisectors as a difference `squared_length` of squared
+///          lengths would
 template <class Metric, class NamedParameters = CGAL::parameters::Default_named_parameters>
 double weight_for_squared_length(const Metric& metric, double squared_length,
                                  const NamedParameters& np = CGAL::parameters::default_values())

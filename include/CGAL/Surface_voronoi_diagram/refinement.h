@@ -50,7 +50,10 @@ namespace Surface_voronoi {
 
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use the named parameters of `refine_for_sites()`.
+/// \deprecated Use the named parameters `Surface_voronoi::parameters::refinement_trigger_ratio`,
+/// `Surface_voronoi::parameters::refinement_edge_length_ratio` and
+/// `Surface_voronoi::parameters::refinement_max_vertices` of
+/// `refine_for_sites(tm, sites, out, np_in, np_out)`.
 struct CGAL_DEPRECATED_MSG("use the named parameters of refine_for_sites")
 Refinement_options
 {
@@ -86,6 +89,7 @@ split_halfedge(typename CGAL::Surface_mesh<P>::Edge_index e, const CGAL::Surface
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// What `refine_for_sites()` made.
+/// \tparam PolygonMesh the type of the refined mesh
 template <class PolygonMesh>
 struct Refined_sites
 {
@@ -156,6 +160,8 @@ struct Refined_sites
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \returns the sites located on `out`, the target edge length, the number of edges split,
+///          and whether the vertex limit stopped the refinement
 /// \pre `tm` is a triangle mesh, `sites` is not empty, `out` is empty
 template <class TriangleMesh, class LocationRange, class PolygonMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
@@ -318,7 +324,9 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
 
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated What the deprecated `refine_for_sites()` overload returns.
+/// \deprecated What the deprecated `refine_for_sites(tm, sites, options, np)` overload returns;
+/// `refine_for_sites(tm, sites, out, np_in, np_out)` writes into a mesh of the caller's type
+/// and returns a `Refined_sites`.
 template <class TriangleMesh, class Point_3>
 struct Refinement_result
 {

@@ -40,8 +40,9 @@ namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// `n` area-uniform random face locations of `tm`.
+/// `n` area-uniform random face locations of `tm`, deterministic for a seed.
 ///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \param tm a triangle mesh with at least one face
 /// \param n the number of locations
 /// \param np an optional sequence of named parameters among the ones listed below
@@ -58,6 +59,8 @@ namespace Surface_voronoi {
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+///
+/// \pre `tm` has at least one face
 template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
 random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
@@ -92,7 +95,8 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
 }
 
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated use `random_sites(tm, n, CGAL::parameters::random_seed(seed))`
+/// \deprecated Use `random_sites(tm, n, CGAL::parameters::random_seed(seed))`: the seed is
+/// the named parameter `random_seed`.
 template <class TriangleMesh>
 CGAL_DEPRECATED_MSG("use the named parameter random_seed")
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
@@ -102,9 +106,32 @@ random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
 }
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// `n` blue-noise face locations of `tm` by weighted sample elimination over `5 n`
-/// area-uniform candidates (straight-line distances between candidates). Named parameters
-/// as for `random_sites()`; the same seed gives the same locations.
+/// `n` blue-noise face locations of `tm` by weighted sample elimination
+/// \cgalCite{cgal:y-segpd-15} over `5 n` area-uniform candidates (`random_sites()`): the
+/// candidate most crowded by its neighbours within twice the packing radius is removed until
+/// `n` remain. Distances between candidates are straight-line ones, so on a shell thinner than
+/// that distance a candidate also crowds those across the wall.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \param tm a triangle mesh with at least one face
+/// \param n the number of locations
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{the seed of the candidates' `CGAL::Random` generator: the same seed
+///       gives the same locations}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre `tm` has at least one face, or `n == 0`
 template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
 blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
@@ -186,7 +213,8 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
 }
 
 /// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated use `blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed))`
+/// \deprecated Use `blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed))`: the seed
+/// is the named parameter `random_seed`.
 template <class TriangleMesh>
 CGAL_DEPRECATED_MSG("use the named parameter random_seed")
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >

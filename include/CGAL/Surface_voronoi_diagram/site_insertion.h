@@ -9,7 +9,7 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Site insertion, the paper's mode (\cgalCite{cgal:xwz-svdm-22}, section 3.1): every site becomes a vertex of a working
+// Site insertion, the paper's mode (\cgalCite{cgal:bddvd}, section 3.1): every site becomes a vertex of a working
 // copy of the mesh, and each face holding sites is re-triangulated (Delaunay inside the
 // face, the face's edges kept), so that the embedding is computed on the augmented mesh.
 // A site on an edge splits the edge (no perturbation is needed); a site at a vertex is
@@ -44,9 +44,12 @@ namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// The augmented mesh of `insert_sites()`.
+/// \tparam TriangleMesh the type of the input mesh
+/// \tparam Point_3 the point type of the input mesh's vertex point map
 template <class TriangleMesh, class Point_3>
 struct Site_insertion_result
 {
+  /// the type of the augmented mesh
   typedef CGAL::Surface_mesh<Point_3> Mesh;
   /// the augmented mesh (sites are vertices)
   Mesh mesh;
@@ -55,15 +58,36 @@ struct Site_insertion_result
   /// for each face of `mesh`, the input face that contains it
   typename Mesh::template Property_map<typename Mesh::Face_index,
                                        typename boost::graph_traits<TriangleMesh>::face_descriptor> input_face;
-  /// number of faces split, edges split and Delaunay flips done
+  /// \name Counts
+  /// @{
+
+  /// the numbers of faces split, of edges split and of Delaunay flips done (one declaration:
+  /// the three members share this description)
   std::size_t faces_split = 0, edges_split = 0, flips = 0;
+  /// @}
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
-/// Inserts the sites (face locations of `tm`) as vertices of a copy of `tm`.
+/// Inserts the sites (face locations of `tm`) as vertices of a copy of `tm`, the paper's mode
+/// \cgalCite{cgal:bddvd} (section 3.1): each face holding sites is re-triangulated (Delaunay
+/// inside the face, its edges kept), a site on an edge splits the edge, and a site at a vertex
+/// is that vertex. A metric built on the augmented mesh then has each site at a vertex.
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam LocationRange a range of `Polygon_mesh_processing::Face_location<TriangleMesh, double>`
 /// \param tm the mesh; it is copied, never modified
-/// \param sites a range of `Polygon_mesh_processing::Face_location`s of `tm`
-/// \param np optional `vertex_point_map` of `tm`
+/// \param sites the sites, face locations of `tm`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap`}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the augmented mesh, the vertex of each site and the input face of each face
+/// \throws Input_error if the face of a site is not a face of `tm`
 template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Site_insertion_result<TriangleMesh,
                       typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>

@@ -37,7 +37,9 @@ namespace Surface_voronoi {
 /// Checks the input of a `CGAL::Surface_voronoi_diagram` (the mesh, the sites and the named
 /// parameters that concern them) and returns what is wrong, at most ten problems of each
 /// kind, in the order of the mesh's elements and the sites; an empty result means that the
-/// diagram's preconditions hold.
+/// diagram's preconditions hold. Unlike the preconditions, which are checked in debug builds
+/// only, this check runs in every build: call it on input that may be invalid (the
+/// `surface_voronoi` program calls it before anything else).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam SiteRange a range of `vertex_descriptor`, `Polygon_mesh_processing::Face_location`
@@ -68,6 +70,8 @@ namespace Surface_voronoi {
 ///     \cgalParamDefault{`Coincident_sites::REJECT`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+///
+/// \returns the problems found, empty if there are none
 template <class TriangleMesh, class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRange& sites,
                                           const NamedParameters& np = CGAL::parameters::default_values())

@@ -1,0 +1,78 @@
+/*!
+\ingroup PkgSurfaceVoronoiDiagramConcepts
+\cgalConcept
+
+A metric of `CGAL::Surface_voronoi_diagram` given by the squared distance between a site and
+a vertex of the mesh, computed on demand: the diagram asks only for the corners of the faces
+that a site's field propagates into, so a model may compute distances lazily (a fast-marching
+front advanced only as far as it is asked, as `CGAL::Surface_voronoi::Geodesic_metric` does).
+Inside a face the diagram interpolates the squared distances of the three corners linearly
+\cgalCite{cgal:xwx-svdm-22} \cgalCite{cgal:bddvd}: exact for an embedding, an approximation
+for any other metric.
+
+The concept is a sibling of `SurfaceVoronoiEmbedding`, not a refinement of it; the diagram
+tells the two kinds apart by `Metric_category`.
+
+<b>One diagram at a time.</b> A lazy metric is used by one diagram at a time, during that
+diagram's construction only. The constructor of the diagram checks that `triangle_mesh()` is
+the mesh it is given, calls `set_sites()` once with all the sites, then calls
+`squared_distance()` as often as it needs, and never uses the metric after its constructor
+returns: the metric may then be queried, destroyed, or given to another diagram, whose
+`set_sites()` starts it afresh. `set_sites()` must therefore drop whatever an earlier set of
+sites left. The value for a site and a vertex must depend on them only, not on the order of
+the calls, so that diagrams are deterministic.
+
+<b>Copies.</b> Copies must share no state: a copy is an independent metric that can serve
+another diagram while the original serves one (read-only data such as the mesh may be
+shared, the distances computed for a set of sites may not).
+
+<b>Units.</b> Power weights (named parameter `Surface_voronoi::parameters::site_weight_map`)
+are in the units of the squared distances the model returns.
+`Surface_voronoi::weight_for_squared_length()` takes them to be squared lengths, as they are
+for `CGAL::Surface_voronoi::Geodesic_metric`, and returns the squared length unchanged.
+
+\cgalHasModel `CGAL::Surface_voronoi::Geodesic_metric`
+
+\sa `SurfaceVoronoiEmbedding`
+*/
+class SurfaceVoronoiLazyMetric
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// `CGAL::Surface_voronoi::Lazy_metric_tag`
+  typedef CGAL::Surface_voronoi::Lazy_metric_tag Metric_category;
+
+  /// the type of the mesh, a model of `FaceListGraph` whose faces are triangles
+  typedef unspecified_type Triangle_mesh;
+
+  /// `boost::graph_traits<Triangle_mesh>::vertex_descriptor`
+  typedef unspecified_type vertex_descriptor;
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// returns the mesh the metric was built on. A diagram must be built on this very mesh (the
+  /// same object, not a copy): its constructor throws `CGAL::Surface_voronoi::Input_error`
+  /// otherwise.
+  const Triangle_mesh& triangle_mesh() const;
+
+  /// starts from scratch with these sites, called once by the constructor of each diagram
+  /// before any distance is asked. Site `i` is `sites[i]`: a face of `triangle_mesh()` and
+  /// barycentric coordinates that are non-negative and sum to 1. With the named parameter
+  /// `Surface_voronoi::parameters::coincident_sites` set to `MERGE`, two sites may be at the
+  /// same point.
+  void set_sites(const std::vector<CGAL::Polygon_mesh_processing::Face_location<Triangle_mesh, double> >& sites);
+
+  /// returns the squared distance between site `i` and vertex `v` of `triangle_mesh()`. It
+  /// may advance the metric's own state (hence not `const`).
+  /// \pre `set_sites()` was called and `i` is less than the number of sites given to it.
+  /// \post The result is finite and non-negative: the diagram throws
+  ///       `CGAL::Surface_voronoi::Numerical_error` otherwise.
+  double squared_distance(std::size_t i, vertex_descriptor v);
+
+  /// @}
+};
