@@ -18,7 +18,6 @@ run() {   # run PROGRAM [ARGS...] -- OUTPUT...
   for f in "$@"; do [ -s "$f" ] || { echo "$program did not write $f"; exit 1; }; done
 }
 run quick_start --
-run make_mesh lampshade lampshade.off --vertices 2000 -- lampshade.off
 run power_diagram -- power_diagram.ply
 run breaklines -- breaklines.ply
 run lloyd_relaxation -- lloyd_before.ply lloyd_after.ply

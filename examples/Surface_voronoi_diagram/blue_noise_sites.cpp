@@ -3,15 +3,17 @@
 //   blue_noise_sites [MESH] [SITES]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+#include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -37,6 +39,20 @@ void report(const char* name, const Diagram& d)
             << std::sqrt(spread / double(d.number_of_sites())) / mean << std::endl;
 }
 
+// The arrangement as a binary PLY with a site (`f:site`) and a colour (`f:color`) per face.
+template <class Diagram>
+bool write_cells_PLY(const std::string& file, const Diagram& diagram)
+{
+  Mesh out;
+  auto site = out.add_property_map<Mesh::Face_index, std::int32_t>("f:site", -1).first;
+  SV::make_arrangement(diagram, out, CGAL::parameters::face_patch_map(site));
+  auto color = out.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(Mesh::Face_index f : out.faces()) color[f] = SV::site_color(site[f]);
+  std::ofstream os(file, std::ios::binary);
+  CGAL::IO::set_binary_mode(os);
+  return CGAL::IO::write_PLY(os, out) && os.flush();
+}
+
 int main(int argc, char** argv)
 {
   if(argc > 3)
@@ -55,15 +71,22 @@ int main(int argc, char** argv)
   try
   {
     Mesh mesh;
-    SV::IO::read_checked_triangle_mesh(file, mesh);
+    if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
+    {
+      std::cerr << "blue_noise_sites: cannot read a triangle mesh from " << file << std::endl;
+      return EXIT_FAILURE;
+    }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);
     // the same seed gives the same sites on every run and platform
     const Diagram random(mesh, metric, SV::random_sites(mesh, std::size_t(n), 7));
     const Diagram blue(mesh, metric, SV::blue_noise_sites(mesh, std::size_t(n), 7));
     report("random    ", random);
     report("blue noise", blue);
-    SV::IO::write_arrangement_PLY("random_sites.ply", random);
-    SV::IO::write_arrangement_PLY("blue_noise_sites.ply", blue);
+    if(!write_cells_PLY("random_sites.ply", random) || !write_cells_PLY("blue_noise_sites.ply", blue))
+    {
+      std::cerr << "blue_noise_sites: cannot write the PLY files" << std::endl;
+      return EXIT_FAILURE;
+    }
     std::cout << "written to random_sites.ply and blue_noise_sites.ply" << std::endl;
   }
   catch(const std::exception& e)

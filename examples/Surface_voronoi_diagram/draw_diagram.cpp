@@ -1,12 +1,12 @@
 // Shows a biharmonic Voronoi diagram in CGAL's Basic_viewer_qt (needs Qt5; built only when
-// CMake finds CGAL's Qt5 component). Without a display, render a PNG instead
-// (CGAL/Surface_voronoi_diagram/IO/render_PNG.h).
+// CMake finds CGAL's Qt5 component). Without a display, write the arrangement with its cell
+// colours to a PLY file instead (see power_diagram.cpp) and open it in MeshLab.
 //   draw_diagram [MESH] [SITES]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/draw.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
@@ -23,12 +23,16 @@ int main(int argc, char** argv)
   try
   {
     Mesh mesh;
-    SV::IO::read_checked_triangle_mesh(file, mesh);
+    if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
+    {
+      std::cerr << "draw_diagram: cannot read a triangle mesh from " << file << std::endl;
+      return EXIT_FAILURE;
+    }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);
     CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, n, 1));
     SV::draw(diagram, "Biharmonic Voronoi diagram");
   }
-  catch(const SV::Error& e)
+  catch(const std::exception& e)
   {
     std::cerr << "draw_diagram: " << e.what() << std::endl;
     return EXIT_FAILURE;

@@ -4,16 +4,19 @@
 //   lloyd_relaxation [MESH] [SITES] [ITERATIONS]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+#include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Mesh;
@@ -26,7 +29,7 @@ std::size_t count_argument(const char* text, const char* what, long max)
   char* end = nullptr;
   const long v = std::strtol(text, &end, 10);
   if(end == text || *end != '\0' || v < 1 || v > max)
-    throw SV::Input_error(std::string(what) + " must be an integer between 1 and " + std::to_string(max) + ", got '" + text + "'");
+    throw std::invalid_argument(std::string(what) + " must be an integer between 1 and " + std::to_string(max) + ", got '" + text + "'");
   return std::size_t(v);
 }
 
@@ -37,6 +40,20 @@ double area_spread(const Diagram& d)
   double s = 0;
   for(std::size_t i = 0; i < d.number_of_sites(); ++i) s += (d.cell_area(i) - mean) * (d.cell_area(i) - mean);
   return std::sqrt(s / double(d.number_of_sites())) / mean;
+}
+
+// The arrangement as a binary PLY with a site (`f:site`) and a colour (`f:color`) per face.
+template <class Diagram>
+bool write_cells_PLY(const std::string& file, const Diagram& diagram)
+{
+  Mesh out;
+  auto site = out.add_property_map<Mesh::Face_index, std::int32_t>("f:site", -1).first;
+  SV::make_arrangement(diagram, out, CGAL::parameters::face_patch_map(site));
+  auto color = out.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(Mesh::Face_index f : out.faces()) color[f] = SV::site_color(site[f]);
+  std::ofstream os(file, std::ios::binary);
+  CGAL::IO::set_binary_mode(os);
+  return CGAL::IO::write_PLY(os, out) && os.flush();
 }
 
 int main(int argc, char** argv)
@@ -52,7 +69,11 @@ int main(int argc, char** argv)
     const std::size_t n = argc > 2 ? count_argument(argv[2], "SITES", 100000) : 200;
     const std::size_t iterations = argc > 3 ? count_argument(argv[3], "ITERATIONS", 1000) : 10;
     Mesh mesh;
-    SV::IO::read_checked_triangle_mesh(file, mesh);
+    if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
+    {
+      std::cerr << "lloyd_relaxation: cannot read a triangle mesh from " << file << std::endl;
+      return EXIT_FAILURE;
+    }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);   // computed once for all iterations
     const auto initial = SV::random_sites(mesh, n, 1);
     const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, initial, iterations);
@@ -63,8 +84,11 @@ int main(int argc, char** argv)
     const Diagram before(mesh, metric, initial), after(mesh, metric, relaxed.sites);
     std::cout << "cell area spread (stddev / mean): " << area_spread(before) << " -> " << area_spread(after)
               << std::endl;
-    SV::IO::write_arrangement_PLY("lloyd_before.ply", before);
-    SV::IO::write_arrangement_PLY("lloyd_after.ply", after);
+    if(!write_cells_PLY("lloyd_before.ply", before) || !write_cells_PLY("lloyd_after.ply", after))
+    {
+      std::cerr << "lloyd_relaxation: cannot write the PLY files" << std::endl;
+      return EXIT_FAILURE;
+    }
     std::cout << "written to lloyd_before.ply and lloyd_after.ply" << std::endl;
   }
   catch(const std::exception& e)

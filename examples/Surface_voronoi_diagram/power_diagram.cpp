@@ -4,18 +4,35 @@
 //   power_diagram [MESH] [OUT.ply]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
+#include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <string>
 #include <vector>
 
 typedef CGAL::Surface_mesh<CGAL::Epick::Point_3> Mesh;
 typedef CGAL::Biharmonic_embedding<Mesh> Metric;
 namespace SV = CGAL::Surface_voronoi;
+
+// The arrangement as a binary PLY with a site (`f:site`) and a colour (`f:color`) per face.
+template <class Diagram>
+bool write_cells_PLY(const std::string& file, const Diagram& diagram)
+{
+  Mesh out;
+  auto site = out.add_property_map<Mesh::Face_index, std::int32_t>("f:site", -1).first;
+  SV::make_arrangement(diagram, out, CGAL::parameters::face_patch_map(site));
+  auto color = out.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(Mesh::Face_index f : out.faces()) color[f] = SV::site_color(site[f]);
+  std::ofstream os(file, std::ios::binary);
+  CGAL::IO::set_binary_mode(os);
+  return CGAL::IO::write_PLY(os, out) && os.flush();
+}
 
 int main(int argc, char** argv)
 {
@@ -29,8 +46,16 @@ int main(int argc, char** argv)
   try
   {
     Mesh mesh;
-    SV::IO::read_checked_triangle_mesh(file, mesh);
-    if(num_vertices(mesh) < 400) throw SV::Input_error("the mesh needs at least 400 vertices for 40 sites");
+    if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
+    {
+      std::cerr << "power_diagram: cannot read a triangle mesh from " << file << std::endl;
+      return EXIT_FAILURE;
+    }
+    if(num_vertices(mesh) < 400)
+    {
+      std::cerr << "power_diagram: the mesh needs at least 400 vertices for 40 sites" << std::endl;
+      return EXIT_FAILURE;
+    }
     Metric metric(mesh);
     std::vector<Mesh::Vertex_index> sites;
     for(std::size_t i = 0; i < 40; ++i)
@@ -72,7 +97,11 @@ int main(int argc, char** argv)
                   << by_map.cell_area(i) << std::endl;
     }
     std::cout << "map and vector give the same cells: " << (same ? "yes" : "NO") << std::endl;
-    SV::IO::write_arrangement_PLY(out, by_map);
+    if(!write_cells_PLY(out, by_map))
+    {
+      std::cerr << "power_diagram: cannot write " << out << std::endl;
+      return EXIT_FAILURE;
+    }
     std::cout << "written to " << out << std::endl;
     return same ? EXIT_SUCCESS : EXIT_FAILURE;
   }

@@ -4,10 +4,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
@@ -27,7 +27,11 @@ int main(int argc, char** argv)
   try
   {
     Mesh mesh;
-    SV::IO::read_checked_triangle_mesh(file, mesh);
+    if(!CGAL::IO::read_polygon_mesh(file, mesh) || !CGAL::is_triangle_mesh(mesh))
+    {
+      std::cerr << "remeshing: cannot read a triangle mesh from " << file << std::endl;
+      return EXIT_FAILURE;
+    }
     // The Euclidean embedding gives the best remeshing at high site counts (see the
     // benchmark's Table 1); the biharmonic one with d = 10 is too coarse for thousands of sites.
     SV::Euclidean_embedding<Mesh> metric(mesh);
@@ -45,7 +49,7 @@ int main(int argc, char** argv)
     std::cout << triangles.size() << " triangles on " << points.size() << " sites written to " << out
               << (manifold ? " (a 2-manifold)" : " (not a manifold: some cell is not a disk)") << std::endl;
   }
-  catch(const SV::Error& e)
+  catch(const std::exception& e)
   {
     std::cerr << "remeshing: " << e.what() << std::endl;
     return EXIT_FAILURE;

@@ -2,9 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Writes one of the generated test shapes to an OFF file, so that the thin
-// shells can be looked at, fed to other tools or stored as example data.
+// shells can be looked at, fed to other tools or stored as test data (the
+// regression matrix's meshes were written this way). A tool of the test suite,
+// built with it (-DSVD_BUILD_TESTS=ON), not an example of the library.
 //
-//   make_mesh KIND OUT.off [--vertices N] [--thickness T] [--digits D]
+//   make_test_mesh KIND OUT.off [--vertices N] [--thickness T] [--digits D]
 //
 // KIND is one of sphere, torus, grid, lampshade, vase, pot, u_fold, slab, bowl,
 // box. Exit status 0 on success, 2 on bad arguments, 1 if the file cannot be
@@ -37,7 +39,7 @@ struct Usage_error : std::invalid_argument
 
 void print_usage(std::ostream& os)
 {
-  os << "usage: make_mesh KIND OUT.off [--vertices N] [--thickness T] [--digits D]\n"
+  os << "usage: make_test_mesh KIND OUT.off [--vertices N] [--thickness T] [--digits D]\n"
         "  KIND         sphere, torus, grid, lampshade, vase, pot, u_fold, slab, bowl or box\n"
         "  --vertices   wanted number of vertices (default 10000)\n"
         "  --thickness  wall thickness of the thin shells, relative to the shape's\n"
@@ -106,7 +108,7 @@ int main(int argc, char** argv)
       }
     }
     if(kind.empty() || output.empty())
-      throw Usage_error("expected KIND and OUT.off (run make_mesh --help)");
+      throw Usage_error("expected KIND and OUT.off (run make_test_mesh --help)");
 
     Mesh mesh;
     SVG::make_shape(SVG::shape_from_name(kind), mesh, options);
@@ -115,7 +117,7 @@ int main(int argc, char** argv)
     std::ofstream os(output);
     if(!os || !CGAL::IO::write_OFF(os, mesh, CGAL::parameters::stream_precision(static_cast<int>(digits))) ||
        !os.flush()) {
-      std::cerr << "make_mesh: error: cannot write '" << output << "'\n";
+      std::cerr << "make_test_mesh: error: cannot write '" << output << "'\n";
       return 1;
     }
     std::cout << kind << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces -> " << output
@@ -123,10 +125,10 @@ int main(int argc, char** argv)
   } catch(const std::invalid_argument& e) {
     // Bad arguments and parameters the generators reject are both the
     // caller's to fix.
-    std::cerr << "make_mesh: error: " << e.what() << "\n";
+    std::cerr << "make_test_mesh: error: " << e.what() << "\n";
     return 2;
   } catch(const std::exception& e) {
-    std::cerr << "make_mesh: error: " << e.what() << "\n";
+    std::cerr << "make_test_mesh: error: " << e.what() << "\n";
     return 1;
   }
   return 0;
