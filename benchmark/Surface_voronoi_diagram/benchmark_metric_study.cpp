@@ -19,11 +19,12 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/fidelity.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+
+#include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
 
 #include <algorithm>
 #include <chrono>
@@ -102,7 +103,7 @@ bool load_model(const std::string& name, const Options& o, Mesh& m, std::string&
     const std::filesystem::path p = std::filesystem::path(dir) / (name + ".off");
     if(std::filesystem::exists(p))
     {
-      SV::IO::read_checked_triangle_mesh(p.string(), m);
+      svd_program::read_checked_triangle_mesh(p.string(), m);
       what = p.parent_path().filename().string();
       return true;
     }

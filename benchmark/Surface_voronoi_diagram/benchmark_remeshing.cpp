@@ -16,11 +16,12 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+
+#include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -149,7 +150,7 @@ int main(int argc, char** argv)
       const std::string file = data + "/" + name + ".off";
       if(!std::filesystem::exists(file)) continue;
       Mesh m;
-      try { SV::IO::read_checked_triangle_mesh(file, m); }
+      try { svd_program::read_checked_triangle_mesh(file, m); }
       catch(const std::exception& e) { std::cerr << "skipping " << name << ": " << e.what() << std::endl; continue; }
       int levels = 0;
       while(num_vertices(m) < 10000) { SV::generators::loop_subdivide(m, 1); ++levels; }

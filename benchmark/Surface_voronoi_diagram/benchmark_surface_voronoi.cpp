@@ -25,12 +25,14 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+
+// the surface_voronoi program's mesh reader and PLY arrangement, timed as the program runs them
+#include <surface_voronoi/read_checked_mesh.h>
+#include <surface_voronoi/write_arrangement_PLY.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Random.h>
@@ -427,7 +429,7 @@ std::size_t nf(const Mesh& m) { return static_cast<std::size_t>(num_faces(m)); }
 double load_mesh(const std::string& file, Mesh& mesh)
 {
   const Clock::time_point t0 = Clock::now();
-  SV::IO::read_checked_triangle_mesh(file, mesh);
+  svd_program::read_checked_triangle_mesh(file, mesh);
   return seconds_since(t0);
 }
 
@@ -912,7 +914,7 @@ std::vector<double> time_diagram(const Mesh& mesh, Metric& metric, const std::ve
   CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, SV::parameters::stage_times(&times));
   const double construction = seconds_since(t0);
   const Clock::time_point t1 = Clock::now();
-  const auto arrangement = SV::IO::arrangement_for_PLY(vd);
+  const auto arrangement = svd_program::arrangement_for_PLY(vd);
   const double output = seconds_since(t1);
   const SV::Diagram_statistics& st = vd.statistics();
   return { construction, times["propagation"], times["cutting"], times["repair"], output,

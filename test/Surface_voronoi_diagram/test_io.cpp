@@ -1,12 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the input/output contract: the sites file grammar and the checked
-// reading of meshes. Error messages are part of the contract (the program
-// prints them), so the tests check what they name, not only that they throw.
+// Tests of the surface_voronoi program's input/output contract: the sites file grammar and
+// the checked reading of meshes (examples/Surface_voronoi_diagram/surface_voronoi/). Error
+// messages are part of the contract (the program prints them), so the tests check what they
+// name, not only that they throw.
 
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
+#include <surface_voronoi/read_checked_mesh.h>
+#include <surface_voronoi/sites_file.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -38,8 +39,7 @@ typedef CGAL::Surface_mesh<Point> Surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 typedef std::vector<std::vector<std::size_t>> Polygons;
 
-namespace SV = CGAL::Surface_voronoi;
-namespace SVIO = CGAL::Surface_voronoi::IO;
+namespace SVIO = svd_program;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 std::vector<SVIO::Site_record> read_sites(const std::string& text)
@@ -270,7 +270,7 @@ TEST_CASE("IO sites file: write then read round-trips awkward doubles exactly", 
 TEST_CASE("IO sites file: wrong field count cites the physical line", "[io][sites]")
 {
   const std::string text = "# comment\n\n1 2 3\n\n# another\n   \n1 2\n";
-  REQUIRE_THROWS_AS(read_sites(text), SV::Input_error);
+  REQUIRE_THROWS_AS(read_sites(text), SVIO::Input_error);
   REQUIRE_THROWS_WITH(read_sites(text),
                       "sites file line 7: expected 3 or 4 numbers (x y z [weight]), found 2");
   REQUIRE_THROWS_WITH(read_sites("1 2 3\n1 2 3 4 5\n"), Catch::Contains("line 2") && Catch::Contains("found 5"));
@@ -315,7 +315,7 @@ TEST_CASE("IO sites file: reading from a file, and a missing file names it", "[i
   CHECK(sites[1].weight == 0.5);
   CHECK(sites[1].line == 3);
   const std::string missing = dir.path("missing.txt");
-  REQUIRE_THROWS_AS(SVIO::read_sites_file(missing), SV::Input_error);
+  REQUIRE_THROWS_AS(SVIO::read_sites_file(missing), SVIO::Input_error);
   REQUIRE_THROWS_WITH(SVIO::read_sites_file(missing), Catch::Contains("cannot open") && Catch::Contains(missing));
 }
 
@@ -323,7 +323,7 @@ TEST_CASE("IO sites file: writing rejects what cannot be read back", "[io][sites
 {
   std::ostringstream out;
   const std::vector<Point> points = { Point(0, 0, 0), Point(1, 1, 1) };
-  REQUIRE_THROWS_AS(SVIO::write_sites_file(out, points, std::vector<double>(3, 1.0)), SV::Input_error);
+  REQUIRE_THROWS_AS(SVIO::write_sites_file(out, points, std::vector<double>(3, 1.0)), SVIO::Input_error);
   const std::vector<Point> bad = { Point(0, 0, 0), Point(std::nan(""), 1, 1) };
   REQUIRE_THROWS_WITH(SVIO::write_sites_file(out, bad), Catch::Contains("site 1"));
   REQUIRE_THROWS_WITH(SVIO::write_sites_file(out, points, { 0.0, std::numeric_limits<double>::infinity() }),
@@ -382,7 +382,7 @@ TEST_CASE("IO soup check: a NaN coordinate names the vertex", "[io][mesh]")
 {
   std::vector<Point> points = cube_points();
   points[5] = Point(1, std::numeric_limits<double>::quiet_NaN(), 1);
-  REQUIRE_THROWS_AS(SVIO::check_polygon_soup(points, cube_triangles()), SV::Input_error);
+  REQUIRE_THROWS_AS(SVIO::check_polygon_soup(points, cube_triangles()), SVIO::Input_error);
   REQUIRE_THROWS_WITH(SVIO::check_polygon_soup(points, cube_triangles()),
                       "vertex 5 has a non-finite coordinate (nan)");
 }
@@ -482,7 +482,7 @@ TEST_CASE("IO soup check: a Moebius strip is not orientable", "[io][mesh]")
   }
   REQUIRE_THROWS_WITH(SVIO::check_polygon_soup(points, triangles), Catch::Contains("not orientable"));
   Surface_mesh mesh;
-  REQUIRE_THROWS_AS(SVIO::build_checked_triangle_mesh(points, triangles, mesh), SV::Input_error);
+  REQUIRE_THROWS_AS(SVIO::build_checked_triangle_mesh(points, triangles, mesh), SVIO::Input_error);
 }
 
 // ------------------------------------------------------- building meshes
@@ -624,7 +624,7 @@ TEST_CASE("IO read: unknown extension, missing file and malformed content name t
   Temp_dir dir("read_errors");
   Surface_mesh mesh;
   const std::string unknown = dir.file("cube.xyz", cube_off);
-  REQUIRE_THROWS_AS(SVIO::read_checked_triangle_mesh(unknown, mesh), SV::Input_error);
+  REQUIRE_THROWS_AS(SVIO::read_checked_triangle_mesh(unknown, mesh), SVIO::Input_error);
   REQUIRE_THROWS_WITH(SVIO::read_checked_triangle_mesh(unknown, mesh),
                       Catch::Contains(unknown) && Catch::Contains("unknown extension '.xyz'"));
   const std::string no_extension = dir.file("cube", cube_off);

@@ -11,6 +11,10 @@
 // Exit codes: 0 success (also when some area is reached by no site: a warning says so),
 // 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
 // Every error is one line on stderr.
+//
+// The program's own file handling (the checked mesh reader, the sites and breaklines files,
+// the coloured PLY) lives beside this file, in namespace svd_program: it is not part of the
+// library.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,15 +24,16 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
-#include <CGAL/Surface_voronoi_diagram/IO/read_checked_triangle_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/IO/sites_file.h>
-#include <CGAL/Surface_voronoi_diagram/IO/write_arrangement_PLY.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
+
+#include "read_checked_mesh.h"
+#include "sites_file.h"
+#include "write_arrangement_PLY.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -52,6 +57,7 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
 namespace SV = CGAL::Surface_voronoi;
 
+namespace svd_program {
 namespace {
 
 struct Failure
@@ -210,8 +216,9 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
   const auto t0 = std::chrono::steady_clock::now();
   if(!args.output.empty())
   {
-    try { SV::IO::write_arrangement_PLY(args.output, vd, true); }
-    catch(const SV::Error& e) { fail(4, e.what()); }
+    try { write_arrangement_PLY(args.output, vd, true); }
+    catch(const Write_error& e) { fail(4, e.what()); }
+    catch(const SV::Error& e) { fail(4, e.what()); }   // the arrangement could not be built
   }
   (void)site_points;
   if(!args.dual.empty())
@@ -235,9 +242,9 @@ int run_main(int argc, char** argv)
   typedef std::chrono::steady_clock Clock;
   const auto t0 = Clock::now();
   Mesh mesh;
-  SV::IO::Mesh_reading_report reading;
-  try { reading = SV::IO::read_checked_triangle_mesh(args.mesh, mesh); }
-  catch(const SV::Input_error& e) { fail(1, e.what()); }
+  Mesh_reading_report reading;
+  try { reading = read_checked_triangle_mesh(args.mesh, mesh); }
+  catch(const Input_error& e) { fail(1, e.what()); }
 
   // breaklines: pairs of vertex indices of the file, each an edge of the mesh
   auto breakline = mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
@@ -245,10 +252,10 @@ int run_main(int argc, char** argv)
   {
     std::ifstream in(args.breaklines);
     if(!in) fail(1, "cannot open breaklines file '" + args.breaklines + "'");
-    std::vector<SV::IO::Index_pair_record> pairs;
-    try { pairs = SV::IO::parse_index_pairs(in); }
-    catch(const SV::Input_error& e) { fail(1, e.what()); }
-    for(const SV::IO::Index_pair_record& r : pairs)
+    std::vector<Index_pair_record> pairs;
+    try { pairs = parse_index_pairs(in); }
+    catch(const Input_error& e) { fail(1, e.what()); }
+    for(const Index_pair_record& r : pairs)
     {
       const std::string where = "breaklines file line " + std::to_string(r.line) + ": ";
       if(r.first >= reading.mesh_vertex_of_point.size() || r.second >= reading.mesh_vertex_of_point.size())
@@ -279,12 +286,12 @@ int run_main(int argc, char** argv)
   std::vector<double> weights;
   if(!args.sites.empty())
   {
-    std::vector<SV::IO::Site_record> records;
-    try { records = SV::IO::read_sites_file(args.sites); }
-    catch(const SV::Input_error& e) { fail(1, e.what()); }
+    std::vector<Site_record> records;
+    try { records = read_sites_file(args.sites); }
+    catch(const Input_error& e) { fail(1, e.what()); }
     if(records.empty()) fail(1, args.sites + ": the sites file has no sites");
     const double limit = args.max_site_distance * diagonal;
-    for(const SV::IO::Site_record& r : records)
+    for(const Site_record& r : records)
     {
       const Point p(r.x, r.y, r.z);
       Point q = p;
@@ -470,21 +477,22 @@ int run_main(int argc, char** argv)
   {
     std::ofstream os(args.sites_out);
     if(!os) fail(4, "cannot open '" + args.sites_out + "' for writing");
-    SV::IO::write_sites_file(os, site_points);
+    write_sites_file(os, site_points);
     if(!os) fail(4, "failed to write '" + args.sites_out + "'");
   }
   return 0;
 }
 
 } // namespace
+} // namespace svd_program
 
 int main(int argc, char** argv)
 {
   try
   {
-    return run_main(argc, argv);
+    return svd_program::run_main(argc, argv);
   }
-  catch(const Failure& f)
+  catch(const svd_program::Failure& f)
   {
     std::cerr << "surface_voronoi: error: " << f.message << (f.code == 2 ? " (see --help)" : "") << std::endl;
     return f.code;

@@ -1,7 +1,9 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Reading of input meshes for the command-line program and the library.
+// Reading of input meshes for the surface_voronoi program (the benchmarks include it too, to
+// time what the program does). Not part of the library: its users read meshes with
+// CGAL::IO::read_polygon_mesh().
 //
 // A mesh is read as a polygon soup rather than directly into a halfedge data
 // structure, because a halfedge structure cannot even represent most defects
@@ -19,10 +21,10 @@
 //  - inconsistently oriented faces are re-oriented, not rejected;
 //  - points used by no face are dropped (and counted), not rejected.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H
+#ifndef SVD_PROGRAM_READ_CHECKED_MESH_H
+#define SVD_PROGRAM_READ_CHECKED_MESH_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include "errors.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -33,6 +35,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Union_find.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -52,11 +55,8 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
-namespace IO {
+namespace svd_program {
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// What happened while a mesh was read and turned into a triangle mesh, for the
 /// caller to log: none of these is an error.
 struct Mesh_reading_report
@@ -136,37 +136,6 @@ bool has_all_corners_collinear(const std::vector<Point_3>& points, const Polygon
   return true;
 }
 
-class Union_find
-{
-public:
-  explicit Union_find(std::size_t n) : parent_(n)
-  {
-    for(std::size_t i = 0; i < n; ++i)
-      parent_[i] = i;
-  }
-
-  std::size_t find(std::size_t i)
-  {
-    while(parent_[i] != i)
-    {
-      parent_[i] = parent_[parent_[i]]; // path halving keeps trees shallow without recursion
-      i = parent_[i];
-    }
-    return i;
-  }
-
-  void unite(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a != b)
-      parent_[std::max(a, b)] = std::min(a, b);
-  }
-
-private:
-  std::vector<std::size_t> parent_;
-};
-
 // One side of an edge as seen from one polygon. Sorting these by (lo, hi, face)
 // groups the polygons around each undirected edge in a deterministic order,
 // which keeps error messages reproducible, without any hashing.
@@ -234,7 +203,11 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
 
   // Corners of the same vertex are glued across every edge shared by exactly
   // two faces; the connected classes of corners of a vertex are its fans.
-  Union_find corners(number_of_corners);
+  CGAL::Union_find<std::size_t> corners;
+  std::vector<CGAL::Union_find<std::size_t>::handle> corner_set;
+  corner_set.reserve(number_of_corners);
+  for(std::size_t c = 0; c < number_of_corners; ++c)
+    corner_set.push_back(corners.make_set(c));
   std::vector<Face_link> links;
   bool consistently_oriented = true;
   for(std::size_t begin = 0; begin < half_edges.size();)
@@ -258,8 +231,8 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     {
       const Soup_half_edge& a = half_edges[begin];
       const Soup_half_edge& b = half_edges[begin + 1];
-      corners.unite(a.corner_lo, b.corner_lo);
-      corners.unite(a.corner_hi, b.corner_hi);
+      corners.unify_sets(corner_set[a.corner_lo], corner_set[b.corner_lo]);
+      corners.unify_sets(corner_set[a.corner_hi], corner_set[b.corner_hi]);
       links.push_back(Face_link{ a.face, b.face, a.lo, a.hi, a.forward == b.forward });
       if(a.forward == b.forward)
         consistently_oriented = false;
@@ -269,7 +242,7 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
 
   std::vector<std::pair<std::size_t, std::size_t>> vertex_fan(number_of_corners);
   for(std::size_t c = 0; c < number_of_corners; ++c)
-    vertex_fan[c] = std::make_pair(corner_vertex[c], corners.find(c));
+    vertex_fan[c] = std::make_pair(corner_vertex[c], *corners.find(corner_set[c]));
   std::sort(vertex_fan.begin(), vertex_fan.end());
   vertex_fan.erase(std::unique(vertex_fan.begin(), vertex_fan.end()), vertex_fan.end());
   for(std::size_t begin = 0; begin < vertex_fan.size();)
@@ -517,7 +490,6 @@ struct Mesh_point
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Checks that a polygon soup describes a manifold, orientable surface with
 /// finite coordinates and no zero-area face. Faces need not be consistently
 /// oriented (an edge walked twice in the same direction is not an error).
@@ -535,7 +507,7 @@ struct Mesh_point
 /// \param points the points of the soup
 /// \param polygons each polygon as the indices of its corners in `points`
 /// \pre nothing: any defect of the soup is reported by an exception
-/// \throws CGAL::Surface_voronoi::Input_error with a one-line message naming the
+/// \throws svd_program::Input_error with a one-line message naming the
 ///         offending element, e.g. `edge (4, 9) is non-manifold: shared by 3 faces (1, 5, 8)`
 template <class Point_3>
 void check_polygon_soup(const std::vector<Point_3>& points,
@@ -545,7 +517,6 @@ void check_polygon_soup(const std::vector<Point_3>& points,
   internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Builds a triangle mesh from a polygon soup held in memory, after checking it
 /// with `check_polygon_soup()`.
 ///
@@ -564,7 +535,7 @@ void check_polygon_soup(const std::vector<Point_3>& points,
 /// \param polygons each polygon as the indices of its corners in `points`
 /// \param mesh the output; cleared first, and left untouched if an error is thrown
 /// \pre nothing: any defect of the soup is reported by an exception
-/// \throws CGAL::Surface_voronoi::Input_error as `check_polygon_soup()`, and when a
+/// \throws svd_program::Input_error as `check_polygon_soup()`, and when a
 ///         polygon cannot be triangulated or yields a zero-area triangle
 /// \returns what was done to the soup (triangulation, re-orientation, isolated points)
 template <class Point_3, class TriangleMesh>
@@ -757,7 +728,6 @@ inline bool find_bad_text_vertex(const std::string& filename, const std::string&
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Reads a triangle mesh a mesh file as a polygon soup, checks it and builds a triangle mesh
 /// with `build_checked_triangle_mesh()`.
 ///
@@ -772,7 +742,7 @@ inline bool find_bad_text_vertex(const std::string& filename, const std::string&
 /// \param filename the file to read
 /// \param mesh the output; cleared first, and left untouched if an error is thrown
 /// \pre nothing: any defect of the file is reported by an exception
-/// \throws CGAL::Surface_voronoi::Input_error when the extension is not one of the
+/// \throws svd_program::Input_error when the extension is not one of the
 ///         above, the file cannot be opened or parsed, or the soup fails the
 ///         checks of `build_checked_triangle_mesh()`; the message starts with
 ///         `mesh file 'FILE'`
@@ -829,7 +799,6 @@ Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, Tria
   }
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Checks a triangle mesh already in memory, for the same defects as
 /// `check_polygon_soup()` that a halfedge data structure can hold.
 ///
@@ -844,7 +813,7 @@ Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, Tria
 /// \param tm the mesh
 /// \param vpm the positions of the vertices of `tm`
 /// \pre `tm` is a valid halfedge graph (`CGAL::is_valid_polygon_mesh()`)
-/// \throws CGAL::Surface_voronoi::Input_error with a one-line message naming the element
+/// \throws svd_program::Input_error with a one-line message naming the element
 template <class TriangleMesh, class VertexPointMap>
 void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm)
 {
@@ -902,19 +871,16 @@ void check_triangle_mesh(const TriangleMesh& tm, VertexPointMap vpm)
   }
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Same as `check_triangle_mesh(tm, vpm)` with the internal vertex point map of `tm`.
 /// \param tm the mesh
 /// \pre `tm` is a valid halfedge graph
-/// \throws CGAL::Surface_voronoi::Input_error as `check_triangle_mesh(tm, vpm)`
+/// \throws svd_program::Input_error as `check_triangle_mesh(tm, vpm)`
 template <class TriangleMesh>
 void check_triangle_mesh(const TriangleMesh& tm)
 {
   check_triangle_mesh(tm, get(CGAL::vertex_point, tm));
 }
 
-} // namespace IO
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace svd_program
 
-#endif // CGAL_SURFACE_VORONOI_DIAGRAM_IO_READ_CHECKED_TRIANGLE_MESH_H
+#endif // SVD_PROGRAM_READ_CHECKED_MESH_H

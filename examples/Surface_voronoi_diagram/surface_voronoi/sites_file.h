@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Plain-text record files: the sites file (`x y z [weight]` per line) and the
+// The surface_voronoi program's plain-text record files: the sites file (`x y z [weight]` per line) and the
 // breaklines file (two vertex indices per line) share one grammar, so that
 // users learn one set of rules and errors look the same:
 //  - one record a line; fields separated by spaces or tabs;
@@ -11,10 +11,10 @@
 //  - errors cite the physical line number, 1-based.
 // Record (site) indices are the count of data lines before the record, 0-based.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H
+#ifndef SVD_PROGRAM_SITES_FILE_H
+#define SVD_PROGRAM_SITES_FILE_H
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include "errors.h"
 
 #include <CGAL/number_utils.h>
 
@@ -34,11 +34,8 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
-namespace IO {
+namespace svd_program {
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// One site as read from a sites file.
 struct Site_record
 {
@@ -51,7 +48,6 @@ struct Site_record
   std::size_t line = 0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// One line of a breaklines file: two vertex indices.
 struct Index_pair_record
 {
@@ -95,7 +91,7 @@ enum class Number_status { ok, not_a_number, non_finite };
 // Decimal numbers only: what strtod accepts beyond that (hexadecimal floats,
 // leading white space other than our separators) is not part of the grammar.
 // strtod follows the C locale's LC_NUMERIC, which is "C" (decimal point '.')
-// unless the program calls setlocale(); the package never does.
+// unless the program calls setlocale(); surface_voronoi never does.
 inline Number_status parse_double(const std::string& token, double& value)
 {
   if(token.empty())
@@ -149,8 +145,7 @@ inline std::string format_double(double v)
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
-/// Splits a stream into records following the grammar shared by the package's
+/// Splits a stream into records following the grammar shared by the program's
 /// text files: one record a line, fields separated by spaces or tabs, `#` to
 /// the end of the line is a comment, lines without fields are skipped, a
 /// trailing CR is dropped.
@@ -159,7 +154,7 @@ inline std::string format_double(double v)
 /// \pre nothing
 /// \returns for every line with at least one field, its physical line number
 ///          (1-based) and its fields, in file order
-/// \throws CGAL::Surface_voronoi::Input_error if the stream fails other than by reaching its end
+/// \throws svd_program::Input_error if the stream fails other than by reaching its end
 inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_records(std::istream& in)
 {
   std::vector<std::pair<std::size_t, std::vector<std::string>>> records;
@@ -193,7 +188,6 @@ inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_re
   return records;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Reads a sites file: each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
 /// with the grammar of `tokenize_records()`. Numbers are parsed with `std::strtod`,
 /// which must consume the whole field, so the program's LC_NUMERIC locale must use
@@ -203,7 +197,7 @@ inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_re
 /// \param in the stream to read to its end
 /// \pre the C locale's LC_NUMERIC uses '.' as decimal point (the default)
 /// \returns the sites in file order; the site index is the position in this vector
-/// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
+/// \throws svd_program::Input_error naming the physical line (1-based), e.g.
 ///         `sites file line 7: expected 3 or 4 numbers (x y z [weight]), found 2`,
 ///         `sites file line 3: 'abc' is not a number`,
 ///         `sites file line 9: non-finite value 'nan'` (also for `inf` and overflow like `1e999`)
@@ -246,11 +240,10 @@ inline std::vector<Site_record> read_sites_file(std::istream& in)
   return sites;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Reads a sites file from disk; see `read_sites_file(std::istream&)`.
 /// \param filename the file to read
 /// \pre as `read_sites_file(std::istream&)`
-/// \throws CGAL::Surface_voronoi::Input_error if the file cannot be opened
+/// \throws svd_program::Input_error if the file cannot be opened
 ///         (`cannot open sites file 'FILE'`) or breaks the grammar
 inline std::vector<Site_record> read_sites_file(const std::string& filename)
 {
@@ -261,7 +254,6 @@ inline std::vector<Site_record> read_sites_file(const std::string& filename)
   return read_sites_file(in);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Writes sites in the format read by `read_sites_file()`: one line per site,
 /// `x y z`, or `x y z w` on every line when some weight is non-zero. Numbers
 /// have 17 significant digits, so reading the file back gives the same doubles.
@@ -271,7 +263,7 @@ inline std::vector<Site_record> read_sites_file(const std::string& filename)
 /// \param points the sites
 /// \param weights empty, or one weight per site
 /// \pre `weights.empty() || weights.size() == points.size()`
-/// \throws CGAL::Surface_voronoi::Input_error if the sizes differ, a value is not
+/// \throws svd_program::Input_error if the sizes differ, a value is not
 ///         finite (it could not be read back), or the stream fails
 template <class PointRange>
 void write_sites_file(std::ostream& out, const PointRange& points,
@@ -312,7 +304,6 @@ void write_sites_file(std::ostream& out, const PointRange& points,
     throw Input_error("write_sites_file: the output stream failed");
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Reads records of two non-negative decimal integers (e.g. the vertex indices
 /// of a breaklines file), with the grammar of `tokenize_records()`. Signs are
 /// not accepted.
@@ -321,7 +312,7 @@ void write_sites_file(std::ostream& out, const PointRange& points,
 /// \param file_kind how messages name the file, e.g. `breaklines file`
 /// \pre nothing
 /// \returns the pairs in file order, with their physical line numbers
-/// \throws CGAL::Surface_voronoi::Input_error naming the physical line (1-based), e.g.
+/// \throws svd_program::Input_error naming the physical line (1-based), e.g.
 ///         `breaklines file line 4: expected 2 non-negative integers, found 3`,
 ///         `breaklines file line 4: '-3' is not a non-negative integer`,
 ///         `breaklines file line 4: '99999999999999999999999' is out of range`
@@ -354,8 +345,6 @@ inline std::vector<Index_pair_record> parse_index_pairs(std::istream& in,
   return pairs;
 }
 
-} // namespace IO
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace svd_program
 
-#endif // CGAL_SURFACE_VORONOI_DIAGRAM_IO_SITES_FILE_H
+#endif // SVD_PROGRAM_SITES_FILE_H
