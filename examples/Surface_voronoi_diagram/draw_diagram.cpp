@@ -7,8 +7,8 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/draw.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+#include <CGAL/draw_surface_voronoi_diagram.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -30,7 +30,7 @@ int main(int argc, char** argv)
     }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);
     CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, n, 1));
-    SV::draw(diagram, "Biharmonic Voronoi diagram");
+    CGAL::draw(diagram, "Biharmonic Voronoi diagram");
   }
   catch(const std::exception& e)
   {

@@ -1,17 +1,19 @@
-// The headless renderer and the PNG writer: image size, background, distinct cell colours,
-// lines, hidden sites, determinism, bad input, and a well-formed PNG stream.
+// The headless renderer and the PNG writer of the manual's figures
+// (doc/Surface_voronoi_diagram/figures/): image size, background, cells in the package's
+// colours (site_color()), lines, hidden sites, determinism, bad input, and a well-formed PNG
+// stream.
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/IO/render_PNG.h>
-#include <CGAL/Surface_voronoi_diagram/draw.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <CGAL/Surface_voronoi_diagram/site_colors.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
-#include <sstream>
+#include <render_PNG.h>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
+namespace SVF = svd_figures;
 namespace GEN = CGAL::Surface_voronoi::generators;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;
 typedef std::array<unsigned char, 3> RGB;
@@ -19,9 +21,9 @@ typedef std::array<unsigned char, 3> RGB;
 namespace {
 
 // the unit square seen from above, x to the right and y up, filling the image
-SV::IO::Render_options top_view(std::size_t w, std::size_t h)
+SVF::Render_options top_view(std::size_t w, std::size_t h)
 {
-  SV::IO::Render_options o;
+  SVF::Render_options o;
   o.width = w;
   o.height = h;
   o.view_direction = {{0, 0, -1}};
@@ -32,6 +34,16 @@ SV::IO::Render_options top_view(std::size_t w, std::size_t h)
 
 RGB white() { return {{255, 255, 255}}; }
 
+// whether `pixel` is `color` under some shade in (0, 1] (light scales the three channels alike)
+bool is_shaded(const RGB& pixel, const CGAL::IO::Color& color)
+{
+  const double c[3] = {double(color.red()), double(color.green()), double(color.blue())};
+  const double shade = (pixel[0] * c[0] + pixel[1] * c[1] + pixel[2] * c[2]) / (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  bool close = shade > 0 && shade <= 1.01;
+  for(int k = 0; k < 3; ++k) close = close && std::abs(pixel[k] - shade * c[k]) <= 2.5;
+  return close;
+}
+
 std::uint32_t big_endian(const std::vector<unsigned char>& b, std::size_t at)
 {
   return (std::uint32_t(b[at]) << 24) | (std::uint32_t(b[at + 1]) << 16) | (std::uint32_t(b[at + 2]) << 8) | b[at + 3];
@@ -39,15 +51,15 @@ std::uint32_t big_endian(const std::vector<unsigned char>& b, std::size_t at)
 
 } // namespace
 
-TEST_CASE("render: two cells of a square get two colours, the background stays white", "[render]")
+TEST_CASE("render: two cells of a square get their sites' colours, the background stays white", "[render]")
 {
   Mesh m;
   GEN::make_planar_grid(m, 11, 11, 1.0, 1.0);
   Euclidean e(m);
   const std::vector<Point> sites = {Point(0.25, 0.5, 0), Point(0.75, 0.5, 0)};
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites);
-  SV::IO::Render_options o = top_view(200, 100);
-  const SV::IO::Image image = SV::IO::render_diagram(vd, o);
+  SVF::Render_options o = top_view(200, 100);
+  const SVF::Image image = SVF::render_diagram(vd, o);
   REQUIRE(image.width == 200);
   REQUIRE(image.height == 100);
   REQUIRE(image.rgb.size() == 3 * 200 * 100);
@@ -60,6 +72,10 @@ TEST_CASE("render: two cells of a square get two colours, the background stays w
   CHECK(left != white());
   CHECK(right != white());
   CHECK(left != right);
+  // the package's colour scheme: site 0 on the left, site 1 on the right
+  CHECK(is_shaded(left, SV::site_color(0)));
+  CHECK(is_shaded(right, SV::site_color(1)));
+  CHECK_FALSE(is_shaded(left, SV::site_color(1)));
   // the bisector x = 0.5 is a dark line at x = 100
   const RGB line = image.pixel(100, 30);
   CHECK(int(line[0]) + line[1] + line[2] < 3 * 80);
@@ -67,12 +83,12 @@ TEST_CASE("render: two cells of a square get two colours, the background stays w
   const RGB dot = image.pixel(80, 50);
   CHECK(int(dot[0]) + dot[1] + dot[2] < 3 * 80);
   // the same picture every time
-  CHECK(SV::IO::render_diagram(vd, o).rgb == image.rgb);
+  CHECK(SVF::render_diagram(vd, o).rgb == image.rgb);
 
   // no lines, no dots: the cell colour reaches the bisector and the site
   o.edge_width = 0;
   o.site_radius = 0;
-  const SV::IO::Image plain = SV::IO::render_diagram(vd, o);
+  const SVF::Image plain = SVF::render_diagram(vd, o);
   CHECK(plain.pixel(80, 50) == left);
   CHECK(plain.pixel(98, 30) == left);
   CHECK(plain.pixel(102, 30) == right);
@@ -83,12 +99,12 @@ TEST_CASE("render: a site behind the surface is hidden", "[render]")
   Mesh m;
   GEN::make_icosphere(m, 3, 1.0);
   Euclidean e(m);
-  SV::IO::Render_options o = top_view(120, 120);   // looks down -z: z = 1 is in front
+  SVF::Render_options o = top_view(120, 120);   // looks down -z: z = 1 is in front
   // sites on the axis: front (0, 0, 1), back (0, 0, -1); both project to the centre
   const std::vector<Point> both = {Point(0, 0, 1), Point(0, 0, -1)}, back_first = {Point(0, 0, -1), Point(0.6, 0, -0.8)};
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> front(m, e, both), back(m, e, back_first);
-  const RGB with_front = SV::IO::render_diagram(front, o).pixel(60, 60);
-  const RGB hidden = SV::IO::render_diagram(back, o).pixel(60, 60);
+  const RGB with_front = SVF::render_diagram(front, o).pixel(60, 60);
+  const RGB hidden = SVF::render_diagram(back, o).pixel(60, 60);
   CHECK(int(with_front[0]) + with_front[1] + with_front[2] < 3 * 80);   // dot
   CHECK(int(hidden[0]) + hidden[1] + hidden[2] > 3 * 80);               // cell colour, no dot
   CHECK(hidden != white());
@@ -100,17 +116,17 @@ TEST_CASE("render: any face graph, explicit line map, perspective", "[render]")
   GEN::make_planar_grid(m, 5, 5, 1.0, 1.0);
   Polyhedron p;
   CGAL::copy_face_graph(m, p);
-  SV::IO::Render_options o = top_view(64, 64);
-  o.projection = SV::IO::Projection::PERSPECTIVE;
-  o.palette = {CGAL::IO::Color(200, 100, 50)};
+  SVF::Render_options o = top_view(64, 64);
+  o.projection = SVF::Projection::PERSPECTIVE;
   const std::vector<Point> none;
-  const SV::IO::Image all_edges = SV::IO::render_arrangement(
+  const SVF::Image all_edges = SVF::render_arrangement(
       p, CGAL::Constant_property_map<Polyhedron::Face_handle, int>(0), none, o,
       CGAL::parameters::edge_is_constrained_map(CGAL::Constant_property_map<boost::graph_traits<Polyhedron>::edge_descriptor, bool>(true)));
-  const SV::IO::Image no_edges = SV::IO::render_arrangement(p, CGAL::Constant_property_map<Polyhedron::Face_handle, int>(0), none, o);
+  const SVF::Image no_edges = SVF::render_arrangement(p, CGAL::Constant_property_map<Polyhedron::Face_handle, int>(0), none, o);
   CHECK(all_edges.pixel(0, 0) == white());
-  const RGB lit = no_edges.pixel(32, 20);   // the palette's colour, shaded
+  const RGB lit = no_edges.pixel(32, 20);   // site 0's colour (242, 198, 133), shaded
   CHECK(lit != white());
+  CHECK(is_shaded(lit, SV::site_color(0)));
   CHECK(lit[0] > lit[1]);
   CHECK(lit[1] > lit[2]);
   CHECK(lit[0] > 150);
@@ -126,48 +142,48 @@ TEST_CASE("render: bad input throws with a message", "[render]")
   GEN::make_planar_grid(m, 3, 3, 1.0, 1.0);
   auto site = CGAL::Constant_property_map<Mesh::Face_index, int>(0);
   const std::vector<Point> none;
-  SV::IO::Render_options o;
+  SVF::Render_options o;
   o.width = 0;
-  CHECK_THROWS_AS(SV::IO::render_arrangement(m, site, none, o), SV::Input_error);
-  o = SV::IO::Render_options();
+  CHECK_THROWS_AS(SVF::render_arrangement(m, site, none, o), SVF::Input_error);
+  o = SVF::Render_options();
   o.height = 100000;
-  CHECK_THROWS_AS(SV::IO::render_arrangement(m, site, none, o), SV::Input_error);
-  o = SV::IO::Render_options();
+  CHECK_THROWS_AS(SVF::render_arrangement(m, site, none, o), SVF::Input_error);
+  o = SVF::Render_options();
   o.supersampling = 0;
-  CHECK_THROWS_AS(SV::IO::render_arrangement(m, site, none, o), SV::Input_error);
-  o = SV::IO::Render_options();
+  CHECK_THROWS_AS(SVF::render_arrangement(m, site, none, o), SVF::Input_error);
+  o = SVF::Render_options();
   o.view_direction = {{0, 0, 0}};
-  CHECK_THROWS_WITH(SV::IO::render_arrangement(m, site, none, o), Catch::Contains("view direction"));
-  o = SV::IO::Render_options();
-  o.projection = SV::IO::Projection::PERSPECTIVE;
+  CHECK_THROWS_WITH(SVF::render_arrangement(m, site, none, o), Catch::Contains("view direction"));
+  o = SVF::Render_options();
+  o.projection = SVF::Projection::PERSPECTIVE;
   o.camera_distance = 0.5;
-  CHECK_THROWS_AS(SV::IO::render_arrangement(m, site, none, o), SV::Input_error);
+  CHECK_THROWS_AS(SVF::render_arrangement(m, site, none, o), SVF::Input_error);
   // an empty mesh, and a triangle with its three corners at one point
   Mesh empty;
-  CHECK_THROWS_WITH(SV::IO::render_arrangement(empty, site, none), Catch::Contains("no face"));
+  CHECK_THROWS_WITH(SVF::render_arrangement(empty, site, none), Catch::Contains("no face"));
   Mesh point;
   const auto a = point.add_vertex(Point(1, 1, 1)), b = point.add_vertex(Point(1, 1, 1)), c = point.add_vertex(Point(1, 1, 1));
   point.add_face(a, b, c);
-  CHECK_THROWS_WITH(SV::IO::render_arrangement(point, site, none), Catch::Contains("one point"));
+  CHECK_THROWS_WITH(SVF::render_arrangement(point, site, none), Catch::Contains("one point"));
   // a non-finite coordinate is named
   Mesh bad;
   GEN::make_planar_grid(bad, 3, 3, 1.0, 1.0);
   bad.point(Mesh::Vertex_index(4)) = Point(std::nan(""), 0, 0);
-  CHECK_THROWS_WITH(SV::IO::render_arrangement(bad, site, none), Catch::Contains("vertex 4"));
+  CHECK_THROWS_WITH(SVF::render_arrangement(bad, site, none), Catch::Contains("vertex 4"));
   // seen edge-on, the square is a segment: drawn (as nothing), not an error
-  o = SV::IO::Render_options();
+  o = SVF::Render_options();
   o.view_direction = {{1, 0, 0}};
-  const SV::IO::Image edge_on = SV::IO::render_arrangement(m, site, none, o);
+  const SVF::Image edge_on = SVF::render_arrangement(m, site, none, o);
   CHECK(edge_on.width == 640);
-  CHECK_THROWS_AS(SV::IO::encode_PNG(SV::IO::Image()), SV::Input_error);
-  CHECK_THROWS_AS(SV::IO::write_PNG("/nonexistent-dir/x.png", edge_on), SV::Error);
+  CHECK_THROWS_AS(SVF::encode_PNG(SVF::Image()), SVF::Input_error);
+  CHECK_THROWS_AS(SVF::write_PNG("/nonexistent-dir/x.png", edge_on), SVF::Write_error);
 }
 
 TEST_CASE("PNG: signature, header, chunk CRCs and zlib checksum", "[render][io]")
 {
-  SV::IO::Image image(37, 5, {{10, 20, 30}});
+  SVF::Image image(37, 5, {{10, 20, 30}});
   image.set_pixel(3, 2, {{200, 0, 0}});
-  const std::vector<unsigned char> png = SV::IO::encode_PNG(image);
+  const std::vector<unsigned char> png = SVF::encode_PNG(image);
   const std::vector<unsigned char> signature = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   REQUIRE(std::equal(signature.begin(), signature.end(), png.begin()));
   std::size_t at = 8;
@@ -178,7 +194,7 @@ TEST_CASE("PNG: signature, header, chunk CRCs and zlib checksum", "[render][io]"
     const std::uint32_t length = big_endian(png, at);
     REQUIRE(at + 12 + length <= png.size());
     types.emplace_back(png.begin() + at + 4, png.begin() + at + 8);
-    const std::uint32_t crc = SV::IO::internal::crc32_update(0xFFFFFFFFu, png.data() + at + 4, length + 4) ^ 0xFFFFFFFFu;
+    const std::uint32_t crc = SVF::internal::crc32_update(0xFFFFFFFFu, png.data() + at + 4, length + 4) ^ 0xFFFFFFFFu;
     CHECK(crc == big_endian(png, at + 8 + length));
     if(types.back() == "IHDR")
     {
@@ -200,26 +216,11 @@ TEST_CASE("PNG: signature, header, chunk CRCs and zlib checksum", "[render][io]"
     raw.push_back(0);
     raw.insert(raw.end(), image.rgb.begin() + 3 * y * image.width, image.rgb.begin() + 3 * (y + 1) * image.width);
   }
-  CHECK(SV::IO::internal::adler32(raw) == big_endian(idat, idat.size() - 4));
+  CHECK(SVF::internal::adler32(raw) == big_endian(idat, idat.size() - 4));
   // flat colour compresses
   CHECK(idat.size() < raw.size() / 4);
   // CRC-32 of "123456789" is the standard check value
   const std::string check = "123456789";
-  CHECK((SV::IO::internal::crc32_update(0xFFFFFFFFu, reinterpret_cast<const unsigned char*>(check.data()), 9) ^ 0xFFFFFFFFu)
+  CHECK((SVF::internal::crc32_update(0xFFFFFFFFu, reinterpret_cast<const unsigned char*>(check.data()), 9) ^ 0xFFFFFFFFu)
         == 0xCBF43926u);
-}
-
-TEST_CASE("draw: without the Qt viewer it compiles, prints a message and returns", "[render]")
-{
-  Mesh m;
-  GEN::make_planar_grid(m, 5, 5, 1.0, 1.0);
-  Euclidean e(m);
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, std::vector<Point>{Point(0.2, 0.2, 0), Point(0.8, 0.7, 0)});
-#ifndef CGAL_USE_BASIC_VIEWER
-  std::ostringstream captured;
-  std::streambuf* old = std::cerr.rdbuf(captured.rdbuf());
-  SV::draw(vd);
-  std::cerr.rdbuf(old);
-  CHECK(captured.str().find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
-#endif
 }

@@ -3,6 +3,8 @@
 // DATA_DIR holds lampshade_thin.off (default: examples/Surface_voronoi_diagram/data of the
 // source tree, passed by CMake). Everything is seeded: the images are the same on every run.
 // One translation unit on purpose: the doc build compiles it, and CGAL headers are slow.
+// The renderer and the PNG writer are beside this file (namespace svd_figures): a tool of the
+// manual, not part of the library.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -12,11 +14,12 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/IO/render_PNG.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+
+#include "render_PNG.h"
 
 #include <chrono>
 #include <cstdlib>
@@ -31,8 +34,8 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = CGAL::Surface_voronoi::generators;
-using SV::IO::Image;
-using SV::IO::Render_options;
+using svd_figures::Image;
+using svd_figures::Render_options;
 
 namespace {
 
@@ -75,7 +78,7 @@ void read_lampshade(const std::string& data, Mesh& mesh)
 
 void save(const std::string& dir, const std::string& name, const Image& image)
 {
-  SV::IO::write_PNG(dir + "/" + name, image);
+  svd_figures::write_PNG(dir + "/" + name, image);
   std::cout << name << ": " << image.width << " x " << image.height << std::endl;
 }
 
@@ -93,24 +96,24 @@ void metrics_figure(const std::string& dir, const std::string& data)
     {"biharmonic", [&] {
        CGAL::Biharmonic_embedding<Mesh> metric(mesh);
        CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, sites);
-       return SV::IO::render_diagram(diagram, o);
+       return svd_figures::render_diagram(diagram, o);
      }},
     {"euclidean", [&] {
        SV::Euclidean_embedding<Mesh> metric(mesh);
        CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites);
-       return SV::IO::render_diagram(diagram, o);
+       return svd_figures::render_diagram(diagram, o);
      }},
     {"geodesic", [&] {
        SV::Geodesic_metric<Mesh> metric(mesh);
        CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > diagram(mesh, metric, sites);
-       return SV::IO::render_diagram(diagram, o);
+       return svd_figures::render_diagram(diagram, o);
      }},
     {"rvd", [&] {
        SV::Euclidean_embedding<Mesh> metric(mesh);
        SV::Diagram_options rvd;
        rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
        CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites, rvd);
-       return SV::IO::render_diagram(diagram, o);
+       return svd_figures::render_diagram(diagram, o);
      }},
   };
   std::vector<Image> panels;
@@ -125,7 +128,7 @@ void readme_figure(const std::string& dir, const std::string& data)
   read_lampshade(data, mesh);
   CGAL::Biharmonic_embedding<Mesh> metric(mesh);
   CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, 60, 7));
-  save(dir, "svd_lampshade.png", SV::IO::render_diagram(diagram, panel(480, 360, {{-0.6, -1.0, -1.2}})));
+  save(dir, "svd_lampshade.png", svd_figures::render_diagram(diagram, panel(480, 360, {{-0.6, -1.0, -1.2}})));
 }
 
 // Power diagram on a torus: the same sites without and with weights.
@@ -139,10 +142,10 @@ void power_figure(const std::string& dir)
   std::vector<Image> panels;
   SV::Diagram_options options;
   options.weights.assign(sites.size(), 0.);
-  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
   // every fourth site gets a large weight (squared units: the torus tube radius is 0.4)
   for(std::size_t i = 0; i < sites.size(); i += 4) options.weights[i] = 0.08;
-  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
   save(dir, "svd_power.png", beside(panels));
 }
 
@@ -167,8 +170,8 @@ void breaklines_figure(const std::string& dir)
   SV::Euclidean_embedding<Mesh> metric(mesh);
   const Render_options o = panel(316, 300, {{0.0, 0.35, -1.0}});
   std::vector<Image> panels;
-  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites), o));
-  panels.push_back(SV::IO::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites), o));
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(
       mesh, metric, sites, SV::Diagram_options(), CGAL::parameters::edge_is_constrained_map(breakline)), o));
   save(dir, "svd_breaklines.png", beside(panels));
 }
@@ -183,8 +186,8 @@ void lloyd_figure(const std::string& dir)
   const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, sites, 10);
   const Render_options o = panel(316, 300, {{-0.4, -1.0, -0.5}});
   typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Diagram;
-  save(dir, "svd_lloyd.png", beside({SV::IO::render_diagram(Diagram(mesh, metric, sites), o),
-                                     SV::IO::render_diagram(Diagram(mesh, metric, relaxed.sites), o)}));
+  save(dir, "svd_lloyd.png", beside({svd_figures::render_diagram(Diagram(mesh, metric, sites), o),
+                                     svd_figures::render_diagram(Diagram(mesh, metric, relaxed.sites), o)}));
 }
 
 // Remeshing by the dual: blue-noise sites relaxed by Lloyd, their diagram and its dual.
@@ -198,23 +201,23 @@ void remeshing_figure(const std::string& dir)
   std::vector<K::Point_3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
   if(!SV::dual_triangulation(diagram, std::back_inserter(points), std::back_inserter(triangles)))
-    throw SV::Error("the dual of the torus figure is not a manifold");
+    throw std::runtime_error("the dual of the torus figure is not a manifold");
   Mesh dual;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, dual);
   const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
-  // the dual in one colour with all its edges and flat shading: the triangles are what matters
+  // the dual in one colour (all its faces are given site 0) with all its edges and flat
+  // shading: the triangles are what matters
   Render_options flat = o;
-  flat.palette = {CGAL::IO::Color(200, 215, 235)};
   flat.crease_angle = 0;
   flat.site_radius = 0;
   flat.edge_width = 1.0;
-  const Image dual_image = SV::IO::render_arrangement(dual, CGAL::Constant_property_map<Mesh::Face_index, int>(0),
+  const Image dual_image = svd_figures::render_arrangement(dual, CGAL::Constant_property_map<Mesh::Face_index, int>(0),
                                                       std::vector<K::Point_3>(), flat,
                                                       CGAL::parameters::edge_is_constrained_map(
                                                           CGAL::Constant_property_map<Mesh::Edge_index, bool>(true)));
   Render_options cells = o;
   cells.site_radius = 1.5;   // 300 sites: small dots
-  save(dir, "svd_remeshing.png", beside({SV::IO::render_diagram(diagram, cells), dual_image}));
+  save(dir, "svd_remeshing.png", beside({svd_figures::render_diagram(diagram, cells), dual_image}));
 }
 
 } // namespace

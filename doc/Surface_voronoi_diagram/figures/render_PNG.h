@@ -1,21 +1,23 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Headless rendering of an arrangement into an image or a PNG file: a software rasterizer
-// (z-buffer, supersampling), Lambert + ambient shading, cells in colours that differ between
-// neighbours, cell boundaries as dark lines and sites as dots. It needs no OpenGL and no
-// window, so figures can be produced by the build and by the test suite.
+// Headless rendering of an arrangement into an image or a PNG file, for the manual's figures
+// (make_figures.cpp, beside this file) and the tests; not part of the library. A software
+// rasterizer (z-buffer, supersampling), Lambert + ambient shading, cells in the package's
+// colours (CGAL::Surface_voronoi::site_color()), cell boundaries as dark lines and sites as
+// dots. It needs no OpenGL and no window, so figures can be produced by the build.
 //
 // Lines are drawn by the faces themselves: each visible sample checks its distance, on the
 // screen, to the boundary edges around its face. A line is thus depth-tested exactly by
 // the z-buffer of the faces, with no depth bias to tune (thin walls stay thin).
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_RENDER_PNG_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_RENDER_PNG_H
+#ifndef SVD_FIGURES_RENDER_PNG_H
+#define SVD_FIGURES_RENDER_PNG_H
 
-#include <CGAL/Surface_voronoi_diagram/IO/PNG_writer.h>
+#include "PNG_writer.h"
+
 #include <CGAL/Surface_voronoi_diagram/arrangement.h>
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/IO/Color.h>
@@ -33,15 +35,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
-namespace IO {
+namespace svd_figures {
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Camera projection of `render_arrangement()`.
 enum class Projection
 {
@@ -49,7 +47,6 @@ enum class Projection
   PERSPECTIVE   ///< pinhole camera at `Render_options::camera_distance` bounding radii from the centre
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Options of `render_arrangement()` and `render_diagram()`. The camera is placed
 /// automatically: it looks at the centre of the bounding box along `view_direction`, and the
 /// mesh is scaled to fill the image up to `margin`.
@@ -81,14 +78,10 @@ struct Render_options
   double edge_width = 1.5;
   /// also draw the border of the surface as a line
   bool draw_border = true;
-  CGAL::IO::Color site_color = CGAL::IO::Color(15, 15, 15);
+  /// colour of the site dots
+  CGAL::IO::Color site_dot_color = CGAL::IO::Color(15, 15, 15);
   /// radius of the site dots in pixels (0: no dots); a light ring makes them visible on dark cells
   double site_radius = 2.5;
-  /// colour of faces whose site is negative (no site reaches them)
-  CGAL::IO::Color unreached_color = CGAL::IO::Color(190, 190, 190);
-  /// cell colours; neighbouring cells get different entries while there are enough of them
-  /// (empty: a built-in palette of 12 colours)
-  std::vector<CGAL::IO::Color> palette;
 };
 
 namespace internal {
@@ -107,88 +100,6 @@ inline bool render_normalize(Render_vec& a)
   if(!(n > 0) || !std::isfinite(n)) return false;
   for(double& c : a) c /= n;
   return true;
-}
-
-// Soft, clearly distinct hues that keep dark lines and dots readable on top of them.
-inline std::vector<CGAL::IO::Color> default_palette()
-{
-  return {CGAL::IO::Color(141, 211, 199), CGAL::IO::Color(255, 237, 160), CGAL::IO::Color(190, 186, 218),
-          CGAL::IO::Color(251, 128, 114), CGAL::IO::Color(128, 177, 211), CGAL::IO::Color(253, 180, 98),
-          CGAL::IO::Color(179, 222, 105), CGAL::IO::Color(252, 205, 229), CGAL::IO::Color(204, 235, 197),
-          CGAL::IO::Color(255, 255, 120), CGAL::IO::Color(188, 128, 189), CGAL::IO::Color(217, 217, 217)};
-}
-
-// Fallback when the palette is exhausted: golden-ratio hues, deterministic per site.
-inline CGAL::IO::Color hashed_color(std::int64_t site)
-{
-  const double h = std::fmod(0.13 + 0.6180339887498949 * double(site), 1.0) * 6.0;
-  const int i = int(h);
-  const double f = h - i, v = 0.92, s = 0.5, p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  const double rgb[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
-  return CGAL::IO::Color(static_cast<unsigned char>(255 * rgb[i % 6][0]), static_cast<unsigned char>(255 * rgb[i % 6][1]),
-                         static_cast<unsigned char>(255 * rgb[i % 6][2]));
-}
-
-// Greedy colouring of the cell adjacency graph, cells of high degree first (Welsh-Powell),
-// ties by site value: deterministic, and neighbours differ while the palette suffices. Among
-// the colours free for a cell, the least used so far: the whole palette shows, not four colours.
-inline std::map<std::int64_t, CGAL::IO::Color>
-color_cells(const std::map<std::int64_t, std::vector<std::int64_t> >& adjacency, const std::vector<CGAL::IO::Color>& palette)
-{
-  std::vector<std::int64_t> order;
-  for(const auto& a : adjacency) order.push_back(a.first);
-  std::stable_sort(order.begin(), order.end(), [&](std::int64_t a, std::int64_t b) {
-    return adjacency.at(a).size() > adjacency.at(b).size();
-  });
-  std::map<std::int64_t, std::size_t> slot;
-  std::map<std::int64_t, CGAL::IO::Color> colors;
-  std::vector<std::size_t> uses(palette.size(), 0);
-  for(std::int64_t s : order)
-  {
-    std::vector<bool> used(palette.size() + 1, false);
-    for(std::int64_t t : adjacency.at(s))
-    {
-      auto it = slot.find(t);
-      if(it != slot.end()) used[it->second] = true;
-    }
-    std::size_t k = palette.size();
-    for(std::size_t c = 0; c < palette.size(); ++c)
-      if(!used[c] && (k == palette.size() || uses[c] < uses[k])) k = c;
-    if(k < palette.size()) ++uses[k];
-    slot[s] = k;
-    colors[s] = k < palette.size() ? palette[k] : hashed_color(s);
-  }
-  return colors;
-}
-
-// The site of each face, and which sites share an edge (a cell boundary), sorted.
-template <class PolygonMesh, class FaceSiteMap>
-std::map<std::int64_t, std::vector<std::int64_t> > cell_adjacency(const PolygonMesh& mesh, FaceSiteMap face_site)
-{
-  std::map<std::int64_t, std::vector<std::int64_t> > adjacency;
-  for(auto f : faces(mesh))
-  {
-    const std::int64_t s = static_cast<std::int64_t>(get(face_site, f));
-    if(s >= 0) adjacency[s];
-  }
-  for(auto e : edges(mesh))
-  {
-    const auto h = halfedge(e, mesh), o = opposite(h, mesh);
-    if(is_border(h, mesh) || is_border(o, mesh)) continue;
-    const std::int64_t a = static_cast<std::int64_t>(get(face_site, face(h, mesh)));
-    const std::int64_t b = static_cast<std::int64_t>(get(face_site, face(o, mesh)));
-    if(a != b && a >= 0 && b >= 0)
-    {
-      adjacency[a].push_back(b);
-      adjacency[b].push_back(a);
-    }
-  }
-  for(auto& a : adjacency)
-  {
-    std::sort(a.second.begin(), a.second.end());
-    a.second.erase(std::unique(a.second.begin(), a.second.end()), a.second.end());
-  }
-  return adjacency;
 }
 
 inline void check_render_options(const Render_options& o)
@@ -224,11 +135,9 @@ inline double squared_segment_distance(double px, double py, const std::array<do
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
-///
 /// Renders a polygon mesh whose faces are labelled by site, typically the arrangement written
 /// by `make_arrangement()`, into an RGB image: faces are filled with the colour of their
-/// cell (neighbouring cells differ; negative sites get `Render_options::unreached_color`),
+/// cell, `CGAL::Surface_voronoi::site_color()` (grey for a negative site: no site reaches it),
 /// shaded with ambient and two-sided Lambertian light from the upper left of the camera;
 /// constrained edges (cell boundaries) are dark lines hidden where the surface hides them;
 /// `sites` are dots, drawn where they are not hidden. The result is deterministic.
@@ -244,8 +153,8 @@ inline double squared_segment_distance(double px, double py, const std::array<do
 ///        readable map edge -> `bool`, the lines drawn; default: the edges between faces of
 ///        different sites)
 /// \returns the image, `options.width` x `options.height`
-/// \throws Surface_voronoi::Input_error on invalid options, an empty mesh, a non-finite
-///         coordinate, or a mesh that projects to a single point
+/// \throws Input_error on invalid options, an empty mesh, a non-finite coordinate, or a mesh
+///         that projects to a single point
 template <class PolygonMesh, class FaceSiteMap, class PointRange,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const PointRange& sites,
@@ -302,8 +211,9 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
                                                : face_sites[get(fid, face(h, mesh))] != face_sites[get(fid, face(o, mesh))];
     if(line) lines.push_back({{get(vid, source(h, mesh)), get(vid, target(h, mesh))}});
   }
-  const std::map<std::int64_t, CGAL::IO::Color> cell_colors = internal::color_cells(
-      internal::cell_adjacency(mesh, face_site), options.palette.empty() ? internal::default_palette() : options.palette);
+  std::vector<CGAL::IO::Color> face_colors;   // the package's colour of each face's site
+  face_colors.reserve(face_sites.size());
+  for(std::int64_t site : face_sites) face_colors.push_back(CGAL::Surface_voronoi::site_color(site));
 
   // camera frame: `right` and `upward` span the image plane, `forward` points into the scene
   Render_vec forward = options.view_direction;
@@ -480,8 +390,7 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
                                     double(options.background.blue())}};
       if(f >= 0)
       {
-        const std::int64_t site = face_sites[std::size_t(f)];
-        const CGAL::IO::Color color = site < 0 ? options.unreached_color : cell_colors.at(site);
+        const CGAL::IO::Color& color = face_colors[std::size_t(f)];
         rgb = {{shade[s] * color.red(), shade[s] * color.green(), shade[s] * color.blue()}};
         if(half_width > 0)
         {
@@ -535,7 +444,7 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
           const double r = std::hypot(double(i) + 0.5 - sx, double(j) + 0.5 - sy);
           if(r > ring) continue;
           const std::size_t s = std::size_t(j) * W + std::size_t(i);
-          const CGAL::IO::Color c = r <= dot ? options.site_color : CGAL::IO::Color(250, 250, 250);
+          const CGAL::IO::Color c = r <= dot ? options.site_dot_color : CGAL::IO::Color(250, 250, 250);
           samples[3 * s] = c.red(); samples[3 * s + 1] = c.green(); samples[3 * s + 2] = c.blue();
         }
     }
@@ -555,10 +464,9 @@ Image render_arrangement(const PolygonMesh& mesh, FaceSiteMap face_site, const P
   return image;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Renders `diagram`: its arrangement (`make_arrangement()`) with cell boundaries and
 /// breaklines as lines, and its sites as dots. See `render_arrangement()`.
-/// \throws Surface_voronoi::Input_error on invalid options
+/// \throws Input_error on invalid options
 template <class Diagram>
 Image render_diagram(const Diagram& diagram, const Render_options& options = Render_options())
 {
@@ -567,7 +475,8 @@ Image render_diagram(const Diagram& diagram, const Render_options& options = Ren
   Mesh out;
   auto site = out.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -1).first;
   auto boundary = out.add_property_map<Mesh::Edge_index, bool>("e:boundary", false).first;
-  make_arrangement(diagram, out, CGAL::parameters::face_patch_map(site).edge_is_constrained_map(boundary));
+  CGAL::Surface_voronoi::make_arrangement(diagram, out,
+                                          CGAL::parameters::face_patch_map(site).edge_is_constrained_map(boundary));
   std::vector<Point> sites;
   for(std::size_t i = 0; i < diagram.number_of_sites(); ++i)
   {
@@ -577,18 +486,15 @@ Image render_diagram(const Diagram& diagram, const Render_options& options = Ren
   return render_arrangement(out, site, sites, options, CGAL::parameters::edge_is_constrained_map(boundary));
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Renders `diagram` (see `render_diagram()`) and writes the image to `filename` as a PNG.
-/// \throws Surface_voronoi::Input_error on invalid options
-/// \throws Surface_voronoi::Error if the file cannot be written
+/// \throws Input_error on invalid options
+/// \throws Write_error if the file cannot be written
 template <class Diagram>
 void render_PNG(const std::string& filename, const Diagram& diagram, const Render_options& options = Render_options())
 {
   write_PNG(filename, render_diagram(diagram, options));
 }
 
-} // namespace IO
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace svd_figures
 
-#endif
+#endif // SVD_FIGURES_RENDER_PNG_H

@@ -1,29 +1,40 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A self-contained PNG writer (8-bit RGB). The deflate stream is our own: LZ77 over a 32 KiB
+// A self-contained PNG writer (8-bit RGB), for the manual's figures (make_figures.cpp) and
+// the tests; not part of the library. The deflate stream is our own: LZ77 over a 32 KiB
 // window with hash chains, coded with the fixed Huffman tables of RFC 1951. Rendered
 // diagrams are large areas of flat colour, which this compresses 10-30x; a dependency on
-// libpng or zlib for that would make every user of the renderer link one more library.
+// libpng or zlib for that would make the doc build link one more library.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_IO_PNG_WRITER_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_IO_PNG_WRITER_H
-
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#ifndef SVD_FIGURES_PNG_WRITER_H
+#define SVD_FIGURES_PNG_WRITER_H
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
-namespace IO {
+namespace svd_figures {
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
+/// Bad input of the renderer or the PNG writer (options, mesh, image); the message says which.
+class Input_error : public std::invalid_argument
+{
+public:
+  explicit Input_error(const std::string& what) : std::invalid_argument(what) {}
+};
+
+/// A PNG file that cannot be opened or written.
+class Write_error : public std::runtime_error
+{
+public:
+  explicit Write_error(const std::string& what) : std::runtime_error(what) {}
+};
+
 /// An 8-bit RGB image, rows from top to bottom, as `render_arrangement()` returns it.
 struct Image
 {
@@ -228,9 +239,8 @@ inline void put_chunk(std::vector<unsigned char>& out, const char* type, const s
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// The bytes of `image` as a PNG file (8-bit RGB, no interlacing, compressed).
-/// \throws Surface_voronoi::Input_error if the image is empty or its buffer does not match its size
+/// \throws Input_error if the image is empty or its buffer does not match its size
 inline std::vector<unsigned char> encode_PNG(const Image& image)
 {
   if(image.width == 0 || image.height == 0 || image.width > 0x7FFFFFFF || image.height > 0x7FFFFFFF)
@@ -258,21 +268,18 @@ inline std::vector<unsigned char> encode_PNG(const Image& image)
   return out;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramIO
 /// Writes `image` to `filename` as a PNG file.
-/// \throws Surface_voronoi::Input_error for an empty image
-/// \throws Surface_voronoi::Error if the file cannot be written
+/// \throws Input_error for an empty image
+/// \throws Write_error if the file cannot be written
 inline void write_PNG(const std::string& filename, const Image& image)
 {
   const std::vector<unsigned char> bytes = encode_PNG(image);
   std::ofstream os(filename, std::ios::binary);
-  if(!os) throw Error("cannot open '" + filename + "' for writing");
+  if(!os) throw Write_error("cannot open '" + filename + "' for writing");
   os.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-  if(!os) throw Error("failed to write '" + filename + "'");
+  if(!os) throw Write_error("failed to write '" + filename + "'");
 }
 
-} // namespace IO
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace svd_figures
 
-#endif
+#endif // SVD_FIGURES_PNG_WRITER_H

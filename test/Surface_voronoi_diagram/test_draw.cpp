@@ -1,0 +1,57 @@
+// CGAL::draw() for a diagram (CGAL/draw_surface_voronoi_diagram.h) without the Qt viewer: it
+// compiles, prints a message and returns; the deprecated header and function of 0.1
+// (CGAL/Surface_voronoi_diagram/draw.h, Surface_voronoi::draw()) still forward to it.
+#include "test_support.h"
+
+// the deprecated header warns when included, and the deprecated function when called: both
+// are used here on purpose
+#define CGAL_NO_DEPRECATION_WARNINGS
+#include <CGAL/Surface_voronoi_diagram/draw.h>
+#include <CGAL/draw_surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+
+#include <sstream>
+#include <string>
+
+using namespace svd_test;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = CGAL::Surface_voronoi::generators;
+typedef SV::Euclidean_embedding<Mesh> Euclidean;
+
+namespace {
+
+// what `f` writes to std::cerr
+template <class F>
+std::string captured_cerr(F f)
+{
+  std::ostringstream captured;
+  std::streambuf* old = std::cerr.rdbuf(captured.rdbuf());
+  f();
+  std::cerr.rdbuf(old);
+  return captured.str();
+}
+
+} // namespace
+
+TEST_CASE("draw: without the Qt viewer it compiles, prints a message and returns", "[draw]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 5, 5, 1.0, 1.0);
+  Euclidean e(m);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, std::vector<Point>{Point(0.2, 0.2, 0), Point(0.8, 0.7, 0)});
+#ifndef CGAL_USE_BASIC_VIEWER
+  CHECK(captured_cerr([&] { CGAL::draw(vd); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
+  CHECK(captured_cerr([&] { CGAL::draw(vd, "a title"); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
+  // the deprecated alias of 0.1 forwards to CGAL::draw()
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+  CHECK(captured_cerr([&] { SV::draw(vd); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+#endif
+}
