@@ -20,11 +20,11 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/fidelity.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
+#include <test_meshes.h>                         // the generated test shells
 
 #include <algorithm>
 #include <chrono>
@@ -42,7 +42,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 

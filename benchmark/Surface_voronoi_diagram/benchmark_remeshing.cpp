@@ -18,10 +18,10 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
+#include <test_meshes.h>                         // the generated test shells
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -153,20 +153,20 @@ int main(int argc, char** argv)
       try { svd_program::read_checked_triangle_mesh(file, m); }
       catch(const std::exception& e) { std::cerr << "skipping " << name << ": " << e.what() << std::endl; continue; }
       int levels = 0;
-      while(num_vertices(m) < 10000) { SV::generators::loop_subdivide(m, 1); ++levels; }
+      while(num_vertices(m) < 10000) { svd_test::meshes::loop_subdivide(m, 1); ++levels; }
       models.emplace_back(levels ? name + " (+" + std::to_string(levels) + " Loop)" : name, m);
       if(quick && models.size() == 2) break;
     }
   if(models.empty())
   {
     std::cerr << "no data folder: using generated shells" << std::endl;
-    for(auto shape : { SV::generators::Shape::lampshade, SV::generators::Shape::u_fold, SV::generators::Shape::bowl })
+    for(auto shape : { svd_test::meshes::Shape::lampshade, svd_test::meshes::Shape::u_fold, svd_test::meshes::Shape::bowl })
     {
       Mesh m;
-      SV::generators::Shell_options o;
+      svd_test::meshes::Shell_options o;
       o.target_vertices = 12000;
-      SV::generators::make_shape(shape, m, o);
-      models.emplace_back(SV::generators::shape_name(shape), m);
+      svd_test::meshes::make_shape(shape, m, o);
+      models.emplace_back(svd_test::meshes::shape_name(shape), m);
     }
   }
 

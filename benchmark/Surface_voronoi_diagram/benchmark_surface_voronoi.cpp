@@ -28,11 +28,11 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 
 // the surface_voronoi program's mesh reader and PLY arrangement, timed as the program runs them
 #include <surface_voronoi/read_checked_mesh.h>
 #include <surface_voronoi/write_arrangement_PLY.h>
+#include <test_meshes.h>   // the generated test shells
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Random.h>
@@ -454,9 +454,9 @@ std::string make_mesh_of_size(std::size_t target, Mesh& mesh)
   }
   try
   {
-    SV::generators::Lampshade_options o;
+    svd_test::meshes::Lampshade_options o;
     o.target_vertices = (std::max<std::size_t>)(base, 100);
-    SV::generators::make_thin_lampshade(mesh, o);
+    svd_test::meshes::make_thin_lampshade(mesh, o);
     loop_subdivide(mesh, levels);
     return "lampshade " + short_count(nv(mesh) >> (2 * levels)) + " + " + std::to_string(levels) + " Loop";
   }
@@ -501,11 +501,11 @@ void get_mesh_20k(const Settings& s, Named_mesh& out)
     out.file = boot;
     return;
   }
-  SV::generators::Lampshade_options o;
+  svd_test::meshes::Lampshade_options o;
   o.target_vertices = 20000;
   try
   {
-    SV::generators::make_thin_lampshade(out.mesh, o);
+    svd_test::meshes::make_thin_lampshade(out.mesh, o);
     out.name = "lampshade 20k";
   }
   catch(const std::exception&)

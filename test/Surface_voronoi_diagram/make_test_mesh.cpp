@@ -14,7 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 
 #include <cerrno>
@@ -27,7 +27,7 @@
 
 namespace {
 
-namespace SVG = CGAL::Surface_voronoi::generators;
+namespace SVG = svd_test::meshes;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;

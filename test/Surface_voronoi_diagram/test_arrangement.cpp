@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/boost/graph/Dual.h>
 #include <CGAL/boost/graph/dijkstra_shortest_paths.h>
 #include <CGAL/boost/graph/graph_traits_Surface_mesh.h>
@@ -19,7 +19,7 @@
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 

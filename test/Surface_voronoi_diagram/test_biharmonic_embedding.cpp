@@ -2,7 +2,7 @@
 #include "test_support.h"
 
 #include <CGAL/Biharmonic_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 
 #include <Eigen/Dense>
@@ -10,7 +10,7 @@
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 

@@ -3,11 +3,11 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;
 
 namespace {

@@ -6,14 +6,14 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 #include <memory>
 #include <vector>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 typedef SV::Geodesic_metric<Mesh> Geodesic;

@@ -10,14 +10,14 @@
 #include <CGAL/draw_surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 #include <sstream>
 #include <string>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;
 
 namespace {

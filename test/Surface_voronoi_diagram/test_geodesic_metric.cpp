@@ -7,11 +7,11 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/fidelity.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 typedef SV::Geodesic_metric<Mesh> Geodesic;
 typedef CGAL::Surface_voronoi_diagram<Mesh, Geodesic> Geodesic_diagram;
 

@@ -8,13 +8,13 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 #include <type_traits>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 

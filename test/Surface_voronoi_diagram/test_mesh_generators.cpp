@@ -1,13 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Tests of the generated meshes. The other tests trust these shapes blindly
+// Tests of the generated meshes (include/test_meshes.h). The other tests trust these shapes blindly
 // (a leak through a thin wall is only meaningful if the wall is closed, outward
 // oriented and really `thickness` thick), so every promise the header makes
 // about topology, orientation, size, thickness and triangle quality is checked
 // here, on meshes of a few thousand vertices to keep the run short.
 
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -30,7 +30,7 @@
 
 namespace {
 
-namespace SVG = CGAL::Surface_voronoi::generators;
+namespace SVG = svd_test::meshes;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;

@@ -2,7 +2,7 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -12,7 +12,7 @@
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;
 
 TEST_CASE("power: all-zero weights give exactly the plain diagram", "[power]")

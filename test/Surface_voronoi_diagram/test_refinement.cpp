@@ -5,7 +5,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/fidelity.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -14,7 +14,7 @@
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 TEST_CASE("refinement: the same surface, short edges, the sites in place", "[refinement]")

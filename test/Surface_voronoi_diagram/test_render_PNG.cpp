@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/site_colors.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
@@ -14,7 +14,7 @@
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace SVF = svd_figures;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;
 typedef std::array<unsigned char, 3> RGB;
 

@@ -1,12 +1,12 @@
 // Tests of CGAL/Surface_voronoi_diagram/sampling.h: random and blue-noise sites.
 #include "test_support.h"
 
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 namespace {
 template <class Locations>

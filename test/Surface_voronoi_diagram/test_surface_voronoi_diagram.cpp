@@ -5,14 +5,14 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
+#include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/fidelity.h>
 
 #include <map>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 
 typedef CGAL::Biharmonic_embedding<Mesh> Biharmonic;
 typedef SV::Euclidean_embedding<Mesh> Euclidean;

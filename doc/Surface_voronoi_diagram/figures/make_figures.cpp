@@ -16,10 +16,10 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
-#include <CGAL/Surface_voronoi_diagram/mesh_generators.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include "render_PNG.h"
+#include <test_meshes.h>   // the generated test shapes (test/Surface_voronoi_diagram/include)
 
 #include <chrono>
 #include <cstdlib>
@@ -33,7 +33,7 @@ typedef CGAL::Epick K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
 namespace SV = CGAL::Surface_voronoi;
-namespace GEN = CGAL::Surface_voronoi::generators;
+namespace GEN = svd_test::meshes;
 using svd_figures::Image;
 using svd_figures::Render_options;
 

@@ -1,20 +1,24 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Generated triangle meshes for tests and benchmarks. The thin-walled closed
-// shells are the interesting ones: their two wall sides are only `thickness`
-// apart in space but far apart along the surface, which is exactly where a
-// Euclidean restricted Voronoi diagram leaks through the wall and a geodesic
-// one must not. Everything is deterministic, so a test that fails once fails
-// every time.
+// Generated triangle meshes for the tests, the benchmarks and the manual's figures (test
+// fixtures, not part of the library). The thin-walled closed shells are the interesting ones:
+// their two wall sides are only `thickness` apart in space but far apart along the surface,
+// which is exactly where a Euclidean restricted Voronoi diagram leaks through the wall and a
+// geodesic one must not. Everything is deterministic, so a test that fails once fails every
+// time, and the regression matrix's meshes can be written again (make_test_mesh).
+//
+// CGAL's own generators are used where they build the very same mesh: Loop subdivision and
+// the soup-to-mesh conversion. Its icosahedron and grid are different meshes (see
+// make_icosphere() and make_planar_grid()), so those stay ours.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_MESH_GENERATORS_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_MESH_GENERATORS_H
+#ifndef SVD_TEST_MESHES_H
+#define SVD_TEST_MESHES_H
 
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -33,11 +37,9 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
-namespace generators {
+namespace svd_test {
+namespace meshes {
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Parameters shared by every closed thin-walled shell.
 ///
 /// All lengths are relative: the smooth shape the mesh approximates is scaled so
@@ -57,7 +59,6 @@ struct Shell_options
   std::size_t rim_segments = 0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// A truncated cone wall, open at both ends. Radii and height are proportions
 /// of the outer surface, rescaled to `size`.
 struct Lampshade_options : Shell_options
@@ -67,7 +68,6 @@ struct Lampshade_options : Shell_options
   double height = 1.2;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// A cylindrical wall with a bottom. Proportions of the outer surface.
 struct Pot_options : Shell_options
 {
@@ -75,7 +75,6 @@ struct Pot_options : Shell_options
   double height = 1.0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// A flat plate `width x depth x (thickness * size)`; width and depth are
 /// proportions, rescaled so that the plate's bounding-box diagonal is `size`.
 struct Slab_options : Shell_options
@@ -84,7 +83,6 @@ struct Slab_options : Shell_options
   double depth = 0.75;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// An open-top box with five solid walls. Proportions of the outer box.
 struct Box_options : Shell_options
 {
@@ -93,7 +91,6 @@ struct Box_options : Shell_options
   double height = 0.6;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// A plate folded into a U. `length` (the flat sheets, from the bend axis to
 /// their free ends) and `width` (along the bend axis) are proportions; `gap`
 /// is the distance between the two inner sheet faces in units of the wall
@@ -105,7 +102,6 @@ struct U_fold_options : Shell_options
   double gap = 2.0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// The shapes `make_shape()` can build.
 enum class Shape { sphere, torus, grid, lampshade, vase, pot, u_fold, slab, bowl, box };
 
@@ -252,29 +248,21 @@ private:
   std::unordered_map<Key, std::size_t, Key_hash> cells_;
 };
 
+// The soup into `out` (cleared first) by CGAL's polygon_soup_to_polygon_mesh(): vertices in
+// soup order, then one face per triangle, in order.
 template <class MutableFaceGraph>
 void write_soup(const Soup& soup, MutableFaceGraph& out)
 {
-  typedef boost::graph_traits<MutableFaceGraph> GT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_map<MutableFaceGraph, CGAL::vertex_point_t>::type Vpm;
   typedef typename boost::property_traits<Vpm>::value_type Point;
 
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.triangles))
+    throw std::logic_error("svd_test::meshes: generated a non-manifold soup (internal error)");
+  std::vector<Point> points;
+  points.reserve(soup.points.size());
+  for(const Vec3& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
   CGAL::clear(out);
-  // get, add_vertex and put unqualified: graph adapters provide them by ADL.
-  Vpm vpm = get(CGAL::vertex_point, out);
-  std::vector<vertex_descriptor> vertices;
-  vertices.reserve(soup.points.size());
-  for(const Vec3& p : soup.points) {
-    vertex_descriptor v = add_vertex(out);
-    put(vpm, v, Point(p[0], p[1], p[2]));
-    vertices.push_back(v);
-  }
-  for(const auto& t : soup.triangles) {
-    const std::array<vertex_descriptor, 3> face = {{vertices[t[0]], vertices[t[1]], vertices[t[2]]}};
-    if(CGAL::Euler::add_face(face, out) == GT::null_face())
-      throw std::logic_error("Surface_voronoi::generators: generated a non-manifold face (internal error)");
-  }
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.triangles, out);
 }
 
 inline void check_positive(double value, const char* what, const char* who)
@@ -605,6 +593,7 @@ inline void vase_profile(double u, double& r, double& dr)
   dr = (rs[s + 1] - rs[s]) * pi * std::sin(pi * w) / (2 * span);
 }
 
+// Not CGAL::make_icosahedron(): its 12 vertices and 20 faces come in another order, so every subdivided sphere would be another mesh.
 inline Soup icosphere(int levels, double radius)
 {
   const double phi = (1 + std::sqrt(5.0)) / 2;
@@ -660,7 +649,6 @@ inline Soup icosphere(int levels, double radius)
 
 } // namespace internal
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) an icosphere: the regular icosahedron,
 /// refined `subdivisions` times by splitting each triangle in four, with new
 /// vertices projected onto the sphere at every level. It has
@@ -678,7 +666,6 @@ void make_icosphere(MutableFaceGraph& out, int subdivisions, double radius = 1.0
   internal::write_soup(internal::icosphere(subdivisions, radius), out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a torus around the z axis: `nu` segments
 /// along the big circle of radius `major_radius`, `nv` around the tube of
 /// radius `minor_radius`; each grid quad is split along the diagonal that keeps
@@ -708,7 +695,6 @@ void make_torus(MutableFaceGraph& out, double major_radius, double minor_radius,
   internal::write_soup(soup, out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) the rectangle `[0, width] x [0, height]`
 /// of the plane z = 0, facing +z, as a grid of `nx x ny` vertices whose cells are
 /// split along alternating diagonals (so the mesh has no preferred direction).
@@ -717,6 +703,7 @@ void make_torus(MutableFaceGraph& out, double major_radius, double minor_radius,
 /// triangle can flip, and the boundary stays exact so the area is
 /// `width * height`.
 /// \throws std::invalid_argument unless `nx, ny >= 2`, `width, height > 0` and `0 <= jitter < 0.25`.
+// Not CGAL::make_grid(): it splits every cell along the same diagonal, faces column by column (ours alternate, row by row).
 template <class MutableFaceGraph>
 void make_planar_grid(MutableFaceGraph& out, std::size_t nx, std::size_t ny, double width = 1.0,
                       double height = 1.0, double jitter = 0.0, unsigned int seed = 0)
@@ -758,7 +745,6 @@ void make_planar_grid(MutableFaceGraph& out, std::size_t nx, std::size_t ny, dou
   internal::write_soup(soup, out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a lampshade: a truncated cone wall around
 /// the z axis standing on z = 0, open at both ends, whose outer and inner
 /// surfaces are `thickness * size` apart and are joined by flat rims in the
@@ -798,7 +784,6 @@ void make_thin_lampshade(MutableFaceGraph& out, const Lampshade_options& options
   internal::write_soup(internal::revolve_to_target(pieces, true, t, options.target_vertices), out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a vase: a surface of revolution around the
 /// z axis with a curved profile (foot, belly, narrow neck, flared lip), a flat
 /// bottom and a horizontal rim at the lip. The inner surface is the outer one
@@ -854,7 +839,6 @@ void make_thin_vase(MutableFaceGraph& out, const Shell_options& options = Shell_
   internal::write_soup(internal::revolve_to_target(pieces, false, t, options.target_vertices), out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a pot: a cylindrical wall around the z axis
 /// on a flat bottom at z = 0, both `thickness * size` thick, with a flat rim at
 /// the top. Topologically a sphere.
@@ -877,7 +861,6 @@ void make_thin_pot(MutableFaceGraph& out, const Pot_options& options = Pot_optio
   internal::write_soup(internal::revolve_to_target(pieces, false, t, options.target_vertices), out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a hemispherical bowl: the lower halves of
 /// two concentric spheres, `thickness * size` apart, joined by a flat rim in the
 /// plane z = 0. Topologically a sphere.
@@ -902,7 +885,6 @@ void make_thin_bowl(MutableFaceGraph& out, const Shell_options& options = Shell_
   internal::write_soup(internal::revolve_to_target(pieces, false, t, options.target_vertices), out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a thin flat plate: the closed box
 /// `[-a/2, a/2] x [-b/2, b/2] x [-t/2, t/2]` with `t = thickness * size` and
 /// `a : b = width : depth`, scaled so that the box's diagonal is `size`.
@@ -935,7 +917,6 @@ void make_thin_slab(MutableFaceGraph& out, const Slab_options& options = Slab_op
                        out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) an open-top box whose bottom and four
 /// sides are solid plates `thickness * size` thick: the outer box
 /// `[-W/2, W/2] x [-D/2, D/2] x [0, H]` minus the cavity
@@ -985,7 +966,6 @@ void make_thin_walled_box(MutableFaceGraph& out, const Box_options& options = Bo
                        out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes into `out` (cleared first) a plate `thickness * size` thick folded
 /// into a U around the y axis: two flat sheets over `0 <= x <= L`, their inner
 /// faces in the planes `z = +-g/2` with `g = gap * thickness * size`, joined
@@ -1090,7 +1070,6 @@ void make_u_fold(MutableFaceGraph& out, const U_fold_options& options = U_fold_o
                        out);
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Every value of `Shape`, in declaration order.
 inline const std::vector<Shape>& all_shapes()
 {
@@ -1100,7 +1079,6 @@ inline const std::vector<Shape>& all_shapes()
   return shapes;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// The name of `shape` as accepted by `shape_from_name()`.
 inline std::string shape_name(Shape shape)
 {
@@ -1119,7 +1097,6 @@ inline std::string shape_name(Shape shape)
   throw std::invalid_argument("shape_name: not a Shape value");
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// The shape called `name` (one of `sphere, torus, grid, lampshade, vase, pot,
 /// u_fold, slab, bowl, box`).
 /// \throws std::invalid_argument for any other name, listing the valid ones.
@@ -1134,7 +1111,6 @@ inline Shape shape_from_name(const std::string& name)
   throw std::invalid_argument("unknown shape '" + name + "' (expected one of: " + known + ")");
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Writes `shape` into `out` (cleared first) with about
 /// `options.target_vertices` vertices and a bounding-box diagonal of about
 /// `options.size`, so that programs can take the shape by name. The thin
@@ -1209,7 +1185,6 @@ void make_shape(Shape shape, MutableFaceGraph& out, const Shell_options& options
   throw std::invalid_argument("make_shape: not a Shape value");
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramGenerators
 /// Refines `mesh` by `levels` steps of Loop subdivision (each multiplies the
 /// number of faces by 4), for benchmarks at sizes the generators are not
 /// asked for directly. Loop smoothing moves vertices: it rounds the sharp
@@ -1228,8 +1203,7 @@ void loop_subdivide(TriangleMesh& mesh, int levels)
   CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
 }
 
-} // namespace generators
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace meshes
+} // namespace svd_test
 
-#endif // CGAL_SURFACE_VORONOI_DIAGRAM_MESH_GENERATORS_H
+#endif // SVD_TEST_MESHES_H
