@@ -19,12 +19,13 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/fidelity.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
 #include <test_meshes.h>                         // the generated test shells
+
+#include "fidelity.h"                            // this folder: the measurement against exact geodesics
 
 #include <algorithm>
 #include <chrono>
@@ -113,13 +114,13 @@ bool load_model(const std::string& name, const Options& o, Mesh& m, std::string&
 
 struct Measured
 {
-  SV::Fidelity_report fidelity;
+  svd_bench::Fidelity_report fidelity;
   double seconds = 0;
   std::string error;
 };
 
 template <class Diagram_maker>
-Measured measure(SV::Geodesic_reference<Mesh>& reference, const Options& o, double precomputation, Diagram_maker make)
+Measured measure(svd_bench::Geodesic_reference<Mesh>& reference, const Options& o, double precomputation, Diagram_maker make)
 {
   Measured r;
   try
@@ -127,7 +128,7 @@ Measured measure(SV::Geodesic_reference<Mesh>& reference, const Options& o, doub
     const auto t0 = std::chrono::steady_clock::now();
     auto diagram = make();
     r.seconds = precomputation + seconds_since(t0);
-    r.fidelity = SV::measure_fidelity(*diagram, reference, o.samples, o.seed + 7, 2);
+    r.fidelity = svd_bench::measure_fidelity(*diagram, reference, o.samples, o.seed + 7, 2);
   }
   catch(const std::exception& e)
   {
@@ -143,7 +144,7 @@ void print_row(const std::string& model, std::size_t nv, std::size_t sites, cons
     std::printf("| %s | %zu | %zu | %s | error: %s | | | |\n", model.c_str(), nv, sites, metric.c_str(), r.error.c_str());
     return;
   }
-  const SV::Fidelity_report& f = r.fidelity;
+  const svd_bench::Fidelity_report& f = r.fidelity;
   char wall[64];
   if(f.through_wall_lower == f.through_wall_upper) std::snprintf(wall, sizeof wall, "%.2f%%", 100 * f.through_wall_lower);
   else std::snprintf(wall, sizeof wall, "%.2f-%.2f%%", 100 * f.through_wall_lower, 100 * f.through_wall_upper);
@@ -173,12 +174,12 @@ void study(const std::string& name, const Options& o)
 
   // one exact reference per number of sites, shared by every metric
   std::vector<std::vector<Location> > site_sets;
-  std::vector<std::unique_ptr<SV::Geodesic_reference<Mesh> > > references;
+  std::vector<std::unique_ptr<svd_bench::Geodesic_reference<Mesh> > > references;
   for(std::size_t n : o.sites)
   {
     site_sets.push_back(SV::random_sites(m, n, o.seed));
     const auto t0 = std::chrono::steady_clock::now();
-    references.emplace_back(new SV::Geodesic_reference<Mesh>(m, site_sets.back()));
+    references.emplace_back(new svd_bench::Geodesic_reference<Mesh>(m, site_sets.back()));
     std::printf("| %s | %zu | %zu | GVD (exact, SMSP) | 0 (reference) | | | %.3f |\n", name.c_str(), nv, n, seconds_since(t0));
   }
 
@@ -241,12 +242,12 @@ void study(const std::string& name, const Options& o)
     const auto refined = SV::refine_for_sites(m, site_sets[k], ro);
     const double refinement = seconds_since(t0);
     std::string label = "geodesic";
-    SV::Geodesic_reference<Mesh>* reference = references[k].get();
-    std::unique_ptr<SV::Geodesic_reference<Mesh> > refined_reference;
+    svd_bench::Geodesic_reference<Mesh>* reference = references[k].get();
+    std::unique_ptr<svd_bench::Geodesic_reference<Mesh> > refined_reference;
     if(refined.edges_split > 0)
     {
       label += " (refined to " + std::to_string(num_vertices(refined.mesh)) + " v)";
-      refined_reference.reset(new SV::Geodesic_reference<Mesh>(refined.mesh, refined.sites));
+      refined_reference.reset(new svd_bench::Geodesic_reference<Mesh>(refined.mesh, refined.sites));
       reference = refined_reference.get();
     }
     const Mesh& work = refined.edges_split > 0 ? refined.mesh : m;

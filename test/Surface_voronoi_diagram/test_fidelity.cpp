@@ -1,10 +1,10 @@
-// Tests of CGAL/Surface_voronoi_diagram/fidelity.h: the exact geodesic reference and the
-// fidelity figures.
+// Tests of benchmark/Surface_voronoi_diagram/fidelity.h (the metric study's measurement): the
+// exact geodesic reference and the fidelity figures.
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/fidelity.h>
 #include <test_meshes.h>
+#include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -16,7 +16,7 @@ TEST_CASE("fidelity: on a plane the geodesic reference is the nearest site", "[f
   Mesh m;
   GEN::make_planar_grid(m, 21, 21, 1.0, 1.0, 0.2, 1);
   const auto sites = area_uniform_locations(m, 25, 4);
-  SV::Geodesic_reference<Mesh> reference(m, sites);
+  svd_bench::Geodesic_reference<Mesh> reference(m, sites);
   std::size_t checked = 0, wrong = 0;
   for(const auto& l : area_uniform_locations(m, 500, 5))
   {
@@ -38,7 +38,7 @@ TEST_CASE("fidelity: on a plane the geodesic reference is the nearest site", "[f
   // and the Euclidean diagram of a plane is the geodesic one
   Euclidean e(m);
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites);
-  const SV::Fidelity_report f = SV::measure_fidelity(vd, 1000, 3);
+  const svd_bench::Fidelity_report f = svd_bench::measure_fidelity(vd, 1000, 3);
   CHECK(f.mislabeled_share <= 0.002);   // only samples within rounding of a bisector
   CHECK(f.through_wall_upper == 0);
   CHECK(f.unreached_share == 0);
@@ -58,8 +58,8 @@ TEST_CASE("fidelity: RVD on a U-fold reaches through the gap, biharmonic does no
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> rvd(m, e, sites, o);
   CGAL::Biharmonic_embedding<Mesh> b(m);
   CGAL::Surface_voronoi_diagram<Mesh> bvd(m, b, sites);
-  const SV::Fidelity_report fr = SV::measure_fidelity(rvd, 1500, 2, 8);
-  const SV::Fidelity_report fb = SV::measure_fidelity(bvd, 1500, 2, 64);
+  const svd_bench::Fidelity_report fr = svd_bench::measure_fidelity(rvd, 1500, 2, 8);
+  const svd_bench::Fidelity_report fb = svd_bench::measure_fidelity(bvd, 1500, 2, 64);
   INFO("RVD mislabeled " << fr.mislabeled_share << " through " << fr.through_wall_lower << "; biharmonic "
        << fb.mislabeled_share << " through <= " << fb.through_wall_upper);
   CHECK(fr.through_wall_lower > 0.05);

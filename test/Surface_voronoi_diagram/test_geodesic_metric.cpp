@@ -6,8 +6,8 @@
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/fidelity.h>
 #include <test_meshes.h>
+#include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -31,7 +31,7 @@ void distance_errors(const Mesh& m, const Location<Mesh>& site, double near, dou
     targets.push_back(CGAL::Polygon_mesh_processing::locate_vertex<double>(v, m));
     vs.push_back(v);
   }
-  SV::Geodesic_reference<Mesh> exact(m, { site });
+  svd_bench::Geodesic_reference<Mesh> exact(m, { site });
   const std::vector<double> d = exact.distances(0, targets);
   max_error = 0;
   mean_error = 0;
@@ -101,7 +101,7 @@ TEST_CASE("geodesic metric: the diagram is the exact geodesic Voronoi diagram up
     Geodesic g(m);
     Geodesic_diagram vd(m, g, sites);
     check_invariants(vd);
-    const SV::Fidelity_report f = SV::measure_fidelity(vd, 3000, 99, 4);
+    const svd_bench::Fidelity_report f = svd_bench::measure_fidelity(vd, 3000, 99, 4);
     INFO(names[k] << ": mislabeled " << f.mislabeled_share << ", through a wall <= " << f.through_wall_upper);
     CHECK(f.mislabeled_share <= 0.03);
     CHECK(f.through_wall_upper == 0);
@@ -114,7 +114,7 @@ TEST_CASE("geodesic metric: the diagram is the exact geodesic Voronoi diagram up
     {
       SV::Euclidean_embedding<Mesh> e(m);
       CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > ve(m, e, sites);
-      CHECK(SV::measure_fidelity(ve, 3000, 99, 0).mislabeled_share > 2 * f.mislabeled_share);
+      CHECK(svd_bench::measure_fidelity(ve, 3000, 99, 0).mislabeled_share > 2 * f.mislabeled_share);
     }
   }
 }

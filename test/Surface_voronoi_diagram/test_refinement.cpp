@@ -4,8 +4,8 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/fidelity.h>
 #include <test_meshes.h>
+#include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -72,13 +72,13 @@ TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinem
 
   SV::Geodesic_metric<Mesh> coarse_metric(m);
   CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > coarse(m, coarse_metric, sites);
-  const SV::Fidelity_report before = SV::measure_fidelity(coarse, 3000, 17, 0);
+  const svd_bench::Fidelity_report before = svd_bench::measure_fidelity(coarse, 3000, 17, 0);
 
   const auto r = SV::refine_for_sites(m, sites);
   SV::Geodesic_metric<Mesh> metric(r.mesh);
   CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > fine(r.mesh, metric, r.sites);
   check_invariants(fine);
-  const SV::Fidelity_report after = SV::measure_fidelity(fine, 3000, 17, 4);
+  const svd_bench::Fidelity_report after = svd_bench::measure_fidelity(fine, 3000, 17, 4);
   INFO("mislabeled: coarse " << before.mislabeled_share << ", refined " << after.mislabeled_share);
   CHECK(before.mislabeled_share > 0.04);
   CHECK(before.mislabeled_share > 5 * after.mislabeled_share);

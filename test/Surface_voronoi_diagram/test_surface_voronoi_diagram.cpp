@@ -6,7 +6,7 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <test_meshes.h>
-#include <CGAL/Surface_voronoi_diagram/fidelity.h>
+#include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
 #include <map>
 
@@ -227,8 +227,8 @@ TEST_CASE("diagram: biharmonic cells do not reach through thin walls, RVD cells 
     SV::Diagram_options o;
     o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
     CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vr(m, e, sites, o);
-    const SV::Fidelity_report bh = SV::measure_fidelity(vb, 2000, 1234, 40);
-    const SV::Fidelity_report rvd = SV::measure_fidelity(vr, 2000, 1234, 6);
+    const svd_bench::Fidelity_report bh = svd_bench::measure_fidelity(vb, 2000, 1234, 40);
+    const svd_bench::Fidelity_report rvd = svd_bench::measure_fidelity(vr, 2000, 1234, 6);
     INFO(names[k] << ": area through a wall, biharmonic <= " << bh.through_wall_upper << ", RVD >= " << rvd.through_wall_lower);
     CHECK(bh.through_wall_upper <= 0.005);
     CHECK(rvd.through_wall_lower >= 0.03);   // decided by fast marching; 6 exact trees at the threshold

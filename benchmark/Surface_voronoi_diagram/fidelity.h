@@ -4,13 +4,13 @@
 // How far a diagram is from the exact geodesic Voronoi diagram: the geodesic reference
 // (CGAL's Surface_mesh_shortest_path with all sites as sources: exact polyhedral geodesics)
 // and, on area-uniform samples, the share of the area labelled differently, the area that
-// reaches through a wall, and the cells that are empty or broken.
+// reaches through a wall, and the cells that are empty or broken. A measurement method of the
+// benchmarks (the metric study) and the tests, not part of the library.
 
-#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_FIDELITY_H
-#define CGAL_SURFACE_VORONOI_DIAGRAM_FIDELITY_H
+#ifndef SVD_BENCH_FIDELITY_H
+#define SVD_BENCH_FIDELITY_H
 
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -22,13 +22,12 @@
 #include <map>
 #include <memory>
 #include <queue>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Surface_voronoi {
+namespace svd_bench {
 
-/// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// Exact geodesic Voronoi labels: the site at the smallest polyhedral geodesic distance,
 /// computed by `CGAL::Surface_mesh_shortest_path` with every site as a source. Distances to
 /// one given site are computed on demand by a single-source tree.
@@ -47,7 +46,7 @@ public:
   Geodesic_reference(const TriangleMesh& tm, const std::vector<Face_location>& sites)
     : m_tm(tm), m_sites(sites), m_all(tm)
   {
-    if(sites.empty()) throw Input_error("the geodesic reference needs at least one site");
+    if(sites.empty()) throw std::invalid_argument("the geodesic reference needs at least one site");
     for(const Face_location& s : sites) m_all.add_source_point(to_sp(s));
     m_all.build_sequence_tree();
   }
@@ -91,7 +90,6 @@ private:
   mutable Shortest_path m_all;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// The fidelity figures of a diagram against the exact geodesic Voronoi diagram.
 struct Fidelity_report
 {
@@ -110,7 +108,6 @@ struct Fidelity_report
   std::size_t broken_cells = 0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// Measures `diagram` on `samples` area-uniform points (seeded), against a geodesic
 /// reference built on the diagram's sites. A sample whose assigned site is not the geodesic
 /// one is classified "through a wall" or not by its fast-marching distance to the assigned
@@ -132,9 +129,9 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   std::vector<Face_location> sites;
   for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) sites.push_back(diagram.site_location(i));
   if(sites.size() != reference.number_of_sites())
-    throw Input_error("measure_fidelity: the reference was built on other sites");
+    throw std::invalid_argument("measure_fidelity: the reference was built on other sites");
 
-  const std::vector<Face_location> locs = random_sites(tm, samples, seed);
+  const std::vector<Face_location> locs = CGAL::Surface_voronoi::random_sites(tm, samples, seed);
 
   Fidelity_report report;
   report.samples = samples;
@@ -161,7 +158,7 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   // as much of the mesh as needed); samples whose estimate is within 10% of the threshold
   // are decided by an exact single-source tree, at most `max_exact_trees` of them.
   const double band = 1.1;
-  Geodesic_metric<Mesh, decltype(vpm)> marching(tm, CGAL::parameters::vertex_point_map(vpm));
+  CGAL::Surface_voronoi::Geodesic_metric<Mesh, decltype(vpm)> marching(tm, CGAL::parameters::vertex_point_map(vpm));
   std::size_t through = 0, left = 0;
   std::map<std::size_t, std::vector<std::size_t> > exact_needed;
   for(const auto& entry : undecided)
@@ -195,7 +192,6 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   return report;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramFidelity
 /// Measures `diagram` against a geodesic reference built here on the diagram's sites.
 template <class Diagram>
 Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, unsigned int seed = 0,
@@ -207,7 +203,6 @@ Fidelity_report measure_fidelity(const Diagram& diagram, std::size_t samples, un
   return measure_fidelity(diagram, reference, samples, seed, max_exact_trees);
 }
 
-} // namespace Surface_voronoi
-} // namespace CGAL
+} // namespace svd_bench
 
-#endif
+#endif // SVD_BENCH_FIDELITY_H
