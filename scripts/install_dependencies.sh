@@ -1,9 +1,9 @@
 #!/bin/sh
 # Installs, from Debian 12's packages, what the package needs and what is missing.
-# Required: the five of the design card. Optional (detected at configure time):
-# CGAL's data set, TBB, CHOLMOD + OpenBLAS, ccache, doxygen.
+# Required: the five of the design card, and python3 for the regression matrix. Optional
+# (detected at configure time): CGAL's data set, TBB, CHOLMOD + OpenBLAS, ccache, doxygen.
 set -e
-required="cmake g++ make libcgal-dev libeigen3-dev libspectra-dev libboost-graph-dev catch2"
+required="cmake g++ make python3 libcgal-dev libeigen3-dev libspectra-dev libboost-graph-dev catch2"
 optional="ccache libcgal-demo libtbb-dev libsuitesparse-dev libopenblas0-pthread doxygen"
 missing=""
 for p in $required $optional; do
