@@ -78,8 +78,8 @@ int main(int argc, char** argv)
     }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);
     // the same seed gives the same sites on every run and platform
-    const Diagram random(mesh, metric, SV::random_sites(mesh, std::size_t(n), 7));
-    const Diagram blue(mesh, metric, SV::blue_noise_sites(mesh, std::size_t(n), 7));
+    const Diagram random(mesh, metric, SV::random_sites(mesh, std::size_t(n), CGAL::parameters::random_seed(7)));
+    const Diagram blue(mesh, metric, SV::blue_noise_sites(mesh, std::size_t(n), CGAL::parameters::random_seed(7)));
     report("random    ", random);
     report("blue noise", blue);
     if(!write_cells_PLY("random_sites.ply", random) || !write_cells_PLY("blue_noise_sites.ply", blue))

@@ -95,10 +95,10 @@ int main(int argc, char** argv)
       marked += breakline[e];
     }
     SV::Euclidean_embedding<Mesh> metric(mesh);
-    const auto sites = SV::blue_noise_sites(mesh, std::size_t(n), 3);
+    const auto sites = SV::blue_noise_sites(mesh, std::size_t(n), CGAL::parameters::random_seed(3));
     typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Diagram;
     Diagram free_cells(mesh, metric, sites);
-    Diagram kept(mesh, metric, sites, SV::Diagram_options(), CGAL::parameters::edge_is_constrained_map(breakline));
+    Diagram kept(mesh, metric, sites, CGAL::parameters::edge_is_constrained_map(breakline));
 
     std::cout << marked << " breakline edges (two closed loops)" << std::endl;
     std::cout << "arrangement faces owned from the other half: " << faces_across(free_cells)

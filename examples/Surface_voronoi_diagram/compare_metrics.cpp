@@ -69,9 +69,8 @@ bool run(const char* name, const Mesh& mesh, Metric& metric, const std::vector<L
          SV::Candidate_selection candidates, const std::vector<Location>& samples,
          const std::vector<std::size_t>& exact)
 {
-  SV::Diagram_options options;
-  options.candidates = candidates;
-  const CGAL::Surface_voronoi_diagram<Mesh, Metric> d(mesh, metric, sites, options);
+  const CGAL::Surface_voronoi_diagram<Mesh, Metric> d(mesh, metric, sites,
+                                                      SV::parameters::candidate_selection(candidates));
   const SV::Diagram_statistics& s = d.statistics();
   double smallest = d.surface_area(), largest = 0;
   for(std::size_t i = 0; i < d.number_of_sites(); ++i)
@@ -112,8 +111,8 @@ int main(int argc, char** argv)
       std::cerr << "compare_metrics: cannot read a triangle mesh from " << file << std::endl;
       return EXIT_FAILURE;
     }
-    const std::vector<Location> sites = SV::blue_noise_sites(mesh, std::size_t(n), 5);
-    const std::vector<Location> samples = SV::random_sites(mesh, 5000, 1);
+    const std::vector<Location> sites = SV::blue_noise_sites(mesh, std::size_t(n), CGAL::parameters::random_seed(5));
+    const std::vector<Location> samples = SV::random_sites(mesh, 5000, CGAL::parameters::random_seed(1));
     const std::vector<std::size_t> exact = geodesic_labels(mesh, sites, samples);
     CGAL::Biharmonic_embedding<Mesh> biharmonic(mesh);
     SV::Euclidean_embedding<Mesh> euclidean(mesh);

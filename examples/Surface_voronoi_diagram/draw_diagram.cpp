@@ -29,7 +29,7 @@ int main(int argc, char** argv)
       return EXIT_FAILURE;
     }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);
-    CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, n, 1));
+    CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, n, CGAL::parameters::random_seed(1)));
     CGAL::draw(diagram, "Biharmonic Voronoi diagram");
   }
   catch(const std::exception& e)

@@ -7,7 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
@@ -75,8 +75,8 @@ int main(int argc, char** argv)
       return EXIT_FAILURE;
     }
     CGAL::Biharmonic_embedding<Mesh> metric(mesh);   // computed once for all iterations
-    const auto initial = SV::random_sites(mesh, n, 1);
-    const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, initial, iterations);
+    const auto initial = SV::random_sites(mesh, n, CGAL::parameters::random_seed(1));
+    const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, initial, CGAL::parameters::number_of_iterations(iterations));
 
     // the biharmonic energy is reported, not guaranteed to decrease (see the manual)
     for(std::size_t k = 0; k < relaxed.energies.size(); ++k)

@@ -1,10 +1,11 @@
 // Power diagrams (paper 4.7.1): site i owns the points where |E(x) - E(s_i)|^2 - w_i is
-// smallest. The weights are given twice, as a vertex property map and as a vector in site
-// order, to show that both forms give the same diagram.
+// smallest. The weights are given twice to the named parameter site_weight_map, as a vertex
+// property map and as a vector in site order, to show that both forms give the same diagram.
 //   power_diagram [MESH] [OUT.ply]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/property_map.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/site_colors.h>
@@ -80,12 +81,13 @@ int main(int argc, char** argv)
       weight[sites[i]] = 0.5 * (nearest < 0 ? 0. : nearest);
     }
 
-    // the property-map form (weights keyed like the sites) and the vector form (site order)
-    CGAL::Surface_voronoi_diagram<Mesh> by_map(mesh, metric, sites, SV::Diagram_options(),
-                                               SV::parameters::site_weight_map(weight));
-    SV::Diagram_options options;
-    for(Mesh::Vertex_index v : sites) options.weights.push_back(weight[v]);
-    CGAL::Surface_voronoi_diagram<Mesh> by_vector(mesh, metric, sites, options);
+    // the property-map form (weights keyed like the sites) and the vector form (keyed by the
+    // site index: CGAL::make_property_map of a vector in site order)
+    CGAL::Surface_voronoi_diagram<Mesh> by_map(mesh, metric, sites, SV::parameters::site_weight_map(weight));
+    std::vector<double> weights;
+    for(Mesh::Vertex_index v : sites) weights.push_back(weight[v]);
+    CGAL::Surface_voronoi_diagram<Mesh> by_vector(mesh, metric, sites,
+                                                  SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
 
     // a weighted cell may still shrink where a neighbour got a larger weight
     bool same = true;

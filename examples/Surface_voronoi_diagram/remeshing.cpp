@@ -9,7 +9,7 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <cstdlib>
@@ -35,7 +35,8 @@ int main(int argc, char** argv)
     // The Euclidean embedding gives the best remeshing at high site counts (see the
     // benchmark's Table 1); the biharmonic one with d = 10 is too coarse for thousands of sites.
     SV::Euclidean_embedding<Mesh> metric(mesh);
-    const auto relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, 1), iterations);
+    const auto relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
+                                              CGAL::parameters::number_of_iterations(iterations));
     std::cout << "energy " << relaxed.energies.front() << " -> " << relaxed.energies.back() << std::endl;
     CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, relaxed.sites);
     std::vector<CGAL::Epick::Point_3> points;

@@ -25,7 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
@@ -38,6 +38,7 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Random.h>
+#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <chrono>
@@ -147,6 +148,24 @@ Arguments parse(int argc, char** argv)
   return a;
 }
 
+// What the command line asks of every diagram: the candidate selection (every globally
+// nearest site for --metric rvd) and, for a power diagram, the weights in site order.
+struct Diagram_choices
+{
+  SV::Candidate_selection candidates = SV::Candidate_selection::PROPAGATION;
+  std::vector<double> weights;   // empty unless some weight is not zero
+};
+
+// Calls f with the named parameters of `choices` added to the chain `np`: the weights are
+// passed (by site index) only for a power diagram, as a plain diagram has none.
+template <class NamedParameters, class Function>
+auto with_diagram_parameters(const Diagram_choices& choices, const NamedParameters& np, const Function& f)
+{
+  const auto chain = SV::parameters::candidate_selection(choices.candidates, np);
+  if(choices.weights.empty()) return f(chain);
+  return f(SV::parameters::site_weight_map(CGAL::make_property_map(choices.weights), chain));
+}
+
 // Projection to the surface, made idempotent: locating a point and constructing it again
 // may move it by an ulp, possibly back and forth between two faces at an edge. Iterate
 // until the sequence repeats and take the lexicographically smallest point of the cycle:
@@ -206,13 +225,15 @@ void report(const Arguments& args, const Diagram& vd, double load, double embedd
 // Runs the diagram on `mesh` with sites given as locations of that mesh.
 template <class Metric>
 void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
-         const SV::Diagram_options& options, double load, double embedding, double insertion,
+         const Diagram_choices& choices, double load, double embedding, double insertion,
          const std::vector<Point>& site_points)
 {
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
   SV::internal::Stage_times times;
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, options,
-                                                 SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)));
+  const Diagram vd = with_diagram_parameters(choices,
+      SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)),
+      [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
   if(!args.output.empty())
   {
@@ -314,8 +335,8 @@ int run_main(int argc, char** argv)
   else
   {
     const std::vector<Location> drawn = args.random >= 0
-      ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), args.seed)
-      : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), args.seed);
+      ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), CGAL::parameters::random_seed(args.seed))
+      : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), CGAL::parameters::random_seed(args.seed));
     for(const Location& l : drawn)
     {
       Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
@@ -345,10 +366,10 @@ int run_main(int argc, char** argv)
   };
   check_dimension(mesh);
 
-  SV::Diagram_options options;
-  if(args.metric == "rvd") options.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+  Diagram_choices choices;
+  if(args.metric == "rvd") choices.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
   if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
-    options.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w
+    choices.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w
   // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
   // with --insert-sites the relaxed sites are inserted afterwards
   std::vector<double> lloyd_energies;
@@ -356,23 +377,25 @@ int run_main(int argc, char** argv)
   {
     try
     {
+      auto relax = [&](auto& metric) {
+        return with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd),
+                                       [&](const auto& np) { return SV::lloyd_relaxation(mesh, metric, locations, np); });
+      };
       SV::Lloyd_result<Mesh> r;
       if(args.metric == "biharmonic")
       {
-        SV::Biharmonic_options bo;
-        bo.dimension = args.dimension;
-        CGAL::Biharmonic_embedding<Mesh> metric(mesh, bo);
-        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(args.dimension));
+        r = relax(metric);
       }
       else if(args.metric == "geodesic")
       {
         SV::Geodesic_metric<Mesh> metric(mesh);
-        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+        r = relax(metric);
       }
       else
       {
         SV::Euclidean_embedding<Mesh> metric(mesh);
-        r = SV::lloyd_relaxation(mesh, metric, locations, args.lloyd, options);
+        r = relax(metric);
       }
       lloyd_energies = r.energies;
       for(std::size_t i = 0; i < r.sites.size(); ++i)
@@ -392,7 +415,8 @@ int run_main(int argc, char** argv)
       const Mesh* work = &mesh;
       std::vector<Location> work_sites = locations;
       SV::Site_insertion_result<Mesh, Point> inserted;
-      SV::Refinement_result<Mesh, Point> refined;
+      Mesh refined;   // the refined copy, each face knowing the input face it lies in
+      auto refined_input_face = refined.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input_face").first;
       double insertion = 0;
       // marks the edges of a working copy that lie on an input breakline
       auto carry_breaklines = [&](Mesh& copy, const auto& input_face) {
@@ -412,14 +436,18 @@ int run_main(int argc, char** argv)
       {
         // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
         const auto ti = Clock::now();
-        refined = SV::refine_for_sites(mesh, locations);
-        if(refined.edges_split > 0)
+        const std::size_t max_vertices = 20000000;
+        const SV::Refined_sites<Mesh> r = SV::refine_for_sites(mesh, locations, refined,
+            SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(refined_input_face));
+        if(r.vertex_limit_reached)
+          fail(1, args.mesh + ": refine_for_sites: the refined mesh would exceed " + std::to_string(max_vertices) + " vertices");
+        if(r.edges_split > 0)
         {
-          work = &refined.mesh;
-          work_sites = refined.sites;
-          carry_breaklines(refined.mesh, refined.input_face);
-          std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << refined.edges_split
-                    << " edges split, " << num_vertices(refined.mesh) << " vertices; --no-refine to keep it)" << std::endl;
+          work = &refined;
+          work_sites = r.sites;
+          carry_breaklines(refined, refined_input_face);
+          std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << r.edges_split
+                    << " edges split, " << num_vertices(refined) << " vertices; --no-refine to keep it)" << std::endl;
         }
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
@@ -449,21 +477,19 @@ int run_main(int argc, char** argv)
       const auto te = Clock::now();
       if(args.metric == "biharmonic")
       {
-        SV::Biharmonic_options bo;
-        bo.dimension = args.dimension;
-        CGAL::Biharmonic_embedding<Mesh> metric(*work, bo);
+        CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(args.dimension));
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
-        run(args, *work, metric, work_sites, options, load, embedding, insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points);
       }
       else if(args.metric == "geodesic")
       {
         SV::Geodesic_metric<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, options, load, 0., insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points);
       }
       else
       {
         SV::Euclidean_embedding<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, options, load, 0., insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points);
       }
     }
   }
