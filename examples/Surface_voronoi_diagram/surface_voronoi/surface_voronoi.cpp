@@ -8,7 +8,8 @@
 //                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K]
 //                   [--stats]
 //
-// Exit codes: 0 success (also when some area is reached by no site: a warning says so),
+// Exit codes: 0 success (also when some area is reached by no site, or when a power weight
+// empties some cells: a warning says so),
 // 1 bad input (mesh, sites file), 2 bad command line, 3 numerical failure, 4 cannot write.
 // Every error is one line on stderr.
 //
@@ -190,13 +191,20 @@ Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
 }
 
 template <class Diagram>
-void report(const Arguments& args, const Diagram& vd, double load, double embedding, double output,
+void report(const Arguments& args, const Diagram& vd, bool power, double load, double embedding, double output,
             double insertion, std::size_t faces, const SV::internal::Stage_times& times)
 {
   const SV::Diagram_statistics& s = vd.statistics();
   if(s.unreached_faces > 0)
     std::cerr << "surface_voronoi: warning: " << s.unreached_faces << " faces (area " << s.unreached_area << ", "
               << s.unreached_components << " component(s)) are reached by no site and are labelled -1" << std::endl;
+  if(power && s.empty_cells > 0)
+  {
+    std::size_t first = 0;
+    while(first + 1 < vd.number_of_sites() && vd.number_of_pieces(first) != 0) ++first;
+    std::cerr << "surface_voronoi: warning: " << s.empty_cells << " site(s) have an empty cell (their power weight is "
+              << "outweighed by a neighbour's); the first is site " << first << std::endl;
+  }
   if(!args.stats) return;
   std::cout.precision(6);
   std::cout << "mesh_faces: " << faces << "\n"
@@ -254,7 +262,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
                    "more sites help)" << std::endl;
   }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  report(args, vd, load, embedding, output, insertion, num_faces(mesh), times);
+  report(args, vd, !choices.weights.empty(), load, embedding, output, insertion, num_faces(mesh), times);
 }
 
 int run_main(int argc, char** argv)
