@@ -76,8 +76,10 @@ struct Options
   std::vector<std::size_t> dims = { 3, 6, 10, 20, 50, 100 };
   std::size_t samples = 20000;
   unsigned int seed = 1;
-  double refine_ratio = SV::Refinement_options().edge_length_ratio;
-  double trigger_ratio = SV::Refinement_options().trigger_ratio;
+  // the defaults of refine_for_sites's named parameters refinement_edge_length_ratio and
+  // refinement_trigger_ratio; --refine-ratio and --trigger-ratio change them
+  double refine_ratio = 0.4;
+  double trigger_ratio = 0.75;
   std::vector<std::string> metrics = { "rvd", "euclidean", "biharmonic", "geodesic" };
   bool wants(const std::string& metric) const { return std::find(metrics.begin(), metrics.end(), metric) != metrics.end(); }
   std::string data_dir = SVD_BENCH_DATA_DIR, cgal_dir = SVD_BENCH_CGAL_MESHES;
@@ -177,7 +179,7 @@ void study(const std::string& name, const Options& o)
   std::vector<std::unique_ptr<svd_bench::Geodesic_reference<Mesh> > > references;
   for(std::size_t n : o.sites)
   {
-    site_sets.push_back(SV::random_sites(m, n, o.seed));
+    site_sets.push_back(SV::random_sites(m, n, CGAL::parameters::random_seed(o.seed)));
     const auto t0 = std::chrono::steady_clock::now();
     references.emplace_back(new svd_bench::Geodesic_reference<Mesh>(m, site_sets.back()));
     std::printf("| %s | %zu | %zu | GVD (exact, SMSP) | 0 (reference) | | | %.3f |\n", name.c_str(), nv, n, seconds_since(t0));
@@ -186,11 +188,10 @@ void study(const std::string& name, const Options& o)
   typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Euclidean_diagram;
   for(std::size_t k = 0; k < o.sites.size(); ++k)
   {
-    SV::Diagram_options rvd;
-    rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
     if(o.wants("rvd")) print_row(name, nv, o.sites[k], "RVD", measure(*references[k], o, 0., [&] {
       SV::Euclidean_embedding<Mesh> xyz(m);
-      return std::make_unique<Euclidean_diagram>(m, xyz, site_sets[k], rvd);
+      return std::make_unique<Euclidean_diagram>(m, xyz, site_sets[k],
+                 SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
     }));
     if(o.wants("euclidean")) print_row(name, nv, o.sites[k], "EDBVD (euclidean)", measure(*references[k], o, 0., [&] {
       SV::Euclidean_embedding<Mesh> xyz(m);
@@ -207,10 +208,8 @@ void study(const std::string& name, const Options& o)
     std::string error;
     try
     {
-      SV::Biharmonic_options bo;
-      bo.dimension = d;
       const auto t0 = std::chrono::steady_clock::now();
-      embedding.reset(new Biharmonic(m, bo));
+      embedding.reset(new Biharmonic(m, SV::parameters::embedding_dimension(d)));
       embedding_seconds = seconds_since(t0);
     }
     catch(const std::exception& e) { error = e.what(); }
@@ -236,21 +235,28 @@ void study(const std::string& name, const Options& o)
   {
     typedef SV::Geodesic_metric<Mesh> Geodesic;
     const auto t0 = std::chrono::steady_clock::now();
-    SV::Refinement_options ro;
-    ro.edge_length_ratio = o.refine_ratio;
-    ro.trigger_ratio = o.trigger_ratio;
-    const auto refined = SV::refine_for_sites(m, site_sets[k], ro);
+    Mesh refined_mesh;
+    const auto refined = SV::refine_for_sites(m, site_sets[k], refined_mesh,
+                                              SV::parameters::refinement_edge_length_ratio(o.refine_ratio,
+                                              SV::parameters::refinement_trigger_ratio(o.trigger_ratio)));
     const double refinement = seconds_since(t0);
     std::string label = "geodesic";
+    if(refined.vertex_limit_reached)
+    {
+      Measured r;
+      r.error = "the refinement reached its vertex limit at " + std::to_string(num_vertices(refined_mesh)) + " vertices";
+      print_row(name, nv, o.sites[k], label, r);
+      continue;
+    }
     svd_bench::Geodesic_reference<Mesh>* reference = references[k].get();
     std::unique_ptr<svd_bench::Geodesic_reference<Mesh> > refined_reference;
     if(refined.edges_split > 0)
     {
-      label += " (refined to " + std::to_string(num_vertices(refined.mesh)) + " v)";
-      refined_reference.reset(new svd_bench::Geodesic_reference<Mesh>(refined.mesh, refined.sites));
+      label += " (refined to " + std::to_string(num_vertices(refined_mesh)) + " v)";
+      refined_reference.reset(new svd_bench::Geodesic_reference<Mesh>(refined_mesh, refined.sites));
       reference = refined_reference.get();
     }
-    const Mesh& work = refined.edges_split > 0 ? refined.mesh : m;
+    const Mesh& work = refined.edges_split > 0 ? refined_mesh : m;
     const auto& work_sites = refined.edges_split > 0 ? refined.sites : site_sets[k];
     print_row(name, nv, o.sites[k], label, measure(*reference, o, refinement, [&] {
       Geodesic metric(work);

@@ -17,7 +17,7 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include <surface_voronoi/read_checked_mesh.h>   // the surface_voronoi program's checked reader
@@ -69,7 +69,7 @@ void compare(const Mesh& mesh, const std::vector<Point>& points, const std::vect
   mesh_tree.accelerate_distance_queries();
 
   double max1 = 0, sum1 = 0, max2 = 0, sum2 = 0;
-  for(const auto& l : SV::random_sites(mesh, samples, 11))
+  for(const auto& l : SV::random_sites(mesh, samples, CGAL::parameters::random_seed(11)))
   {
     const double d = std::sqrt(CGAL::to_double(soup_tree.squared_distance(CGAL::Polygon_mesh_processing::construct_point(l, mesh))));
     max1 = (std::max)(max1, d);
@@ -97,13 +97,15 @@ void compare(const Mesh& mesh, const std::vector<Point>& points, const std::vect
   chamfer = 0.5 * (sum1 / double(samples) + sum2 / double(samples)) / diagonal;
 }
 
-template <class Metric>
+// `np`: the named parameters of the diagram, for Lloyd's diagrams and the final one
+template <class Metric, class NamedParameters>
 Row remesh(const std::string& model, const std::string& method, const Mesh& mesh, Metric& metric,
-           const SV::Diagram_options& options, std::size_t n, std::size_t lloyd, std::size_t samples, double setup)
+           const NamedParameters& np, std::size_t n, std::size_t lloyd, std::size_t samples, double setup)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, 1), lloyd, options);
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, relaxed.sites, options);
+  const auto relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
+                                            np.number_of_iterations(lloyd));
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, relaxed.sites, np);
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3> > tris;
   Row row;
@@ -182,16 +184,16 @@ int main(int argc, char** argv)
     try
     {
       SV::Euclidean_embedding<Mesh> xyz(m);
-      SV::Diagram_options rvd;
-      rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+      const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST);
+      const auto defaults = CGAL::parameters::default_values();
       rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0.));
-      rows.push_back(remesh(entry.first, "EDBVD", m, xyz, SV::Diagram_options(), n, lloyd, samples, 0.));
+      rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0.));
       const auto t = std::chrono::steady_clock::now();
       CGAL::Biharmonic_embedding<Mesh> bh(m);
       const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, SV::Diagram_options(), n, lloyd, samples, setup));
+      rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, defaults, n, lloyd, samples, setup));
       SV::Geodesic_metric<Mesh> geodesic(m);
-      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, SV::Diagram_options(), n, lloyd, samples, 0.));
+      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0.));
     }
     catch(const std::exception& e)
     {

@@ -131,7 +131,7 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   if(sites.size() != reference.number_of_sites())
     throw std::invalid_argument("measure_fidelity: the reference was built on other sites");
 
-  const std::vector<Face_location> locs = CGAL::Surface_voronoi::random_sites(tm, samples, seed);
+  const std::vector<Face_location> locs = CGAL::Surface_voronoi::random_sites(tm, samples, CGAL::parameters::random_seed(seed));
 
   Fidelity_report report;
   report.samples = samples;
@@ -164,7 +164,7 @@ Fidelity_report measure_fidelity(const Diagram& diagram, Geodesic_reference<type
   for(const auto& entry : undecided)
   {
     const std::size_t s = entry.first;
-    marching.set_sites(tm, std::vector<Face_location>(1, sites[s]));
+    marching.set_sites(std::vector<Face_location>(1, sites[s]));
     for(std::size_t j : entry.second)
     {
       const double estimate = marching.distance(0, locs[j]);

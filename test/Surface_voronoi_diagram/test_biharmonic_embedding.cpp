@@ -26,9 +26,7 @@ TEST_CASE("embedding: eigenvectors are M-orthonormal and solve L phi = lambda M 
 {
   Mesh m;
   GEN::make_torus(m, 1.0, 0.35, 48, 20);
-  SV::Biharmonic_options o;
-  o.dimension = 12;
-  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(12));
   Eigen::SparseMatrix<double> L, M;
   matrices(m, L, M);
   const Eigen::MatrixXd& phi = e.computed_eigenvectors();
@@ -59,9 +57,7 @@ TEST_CASE("embedding: the smallest eigenvalues match a dense reference solver", 
   matrices(m, L, M);
   const Eigen::MatrixXd Ld(L), Md(M);
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Ld, Md);
-  SV::Biharmonic_options o;
-  o.dimension = 20;
-  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(20));
   for(Eigen::Index k = 0; k < 21; ++k)
     CHECK(e.computed_eigenvalues()[k] == Approx(dense.eigenvalues()[k]).epsilon(1e-8).margin(1e-9));
 }
@@ -70,9 +66,8 @@ TEST_CASE("embedding: unit sphere eigenvalues l(l+1) with multiplicities 2l+1", 
 {
   Mesh m;
   GEN::make_icosphere(m, 4, 1.0);   // 2562 vertices
-  SV::Biharmonic_options o;
-  o.dimension = 15;                 // l = 1, 2, 3 exactly: 3 + 5 + 7
-  CGAL::Biharmonic_embedding<Mesh> e(m, o);
+  // l = 1, 2, 3 exactly: 3 + 5 + 7
+  CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(15));
   const Eigen::VectorXd& lambda = e.eigenvalues();
   REQUIRE(lambda.size() == 15);
   CHECK(e.number_of_zero_modes() == 1);

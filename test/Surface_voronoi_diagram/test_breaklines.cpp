@@ -48,8 +48,7 @@ TEST_CASE("breaklines: a closed loop separates the sites inside from those outsi
   std::vector<Point> sites = { Point(0.3, 0.3, 0), Point(0.8, 0.8, 0), Point(0.1, 0.5, 0), Point(0.9, 0.2, 0) };
   auto inside = [&](const Point& p) { return p.x() > lo && p.x() < hi && p.y() > lo && p.y() < hi; };
   Euclidean e(m);
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, SV::Diagram_options(),
-                                                    CGAL::parameters::edge_is_constrained_map(loop));
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, CGAL::parameters::edge_is_constrained_map(loop));
   check_invariants(vd);
   CHECK(SV::internal::Diagram_access::data(vd).breaklines.size() == 40);
   std::size_t checked = 0;
@@ -77,7 +76,7 @@ TEST_CASE("breaklines: a closed loop separates the sites inside from those outsi
 
   // without a site inside, the inside is unreached, not an error
   std::vector<Point> outside_only = { Point(0.8, 0.8, 0), Point(0.1, 0.5, 0) };
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> empty_inside(m, e, outside_only, SV::Diagram_options(),
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> empty_inside(m, e, outside_only,
                                                               CGAL::parameters::edge_is_constrained_map(loop));
   CHECK(empty_inside.unreached_area() == Approx(0.25).epsilon(1e-12));
 }
@@ -93,8 +92,7 @@ TEST_CASE("breaklines: an open breakline only bends cells around its end", "[bre
   std::vector<Point> sites = { Point(0.45, 0.1, 0), Point(0.95, 0.1, 0) };
   Euclidean e(m);
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> free_vd(m, e, sites);
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, SV::Diagram_options(),
-                                                    CGAL::parameters::edge_is_constrained_map(line));
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, CGAL::parameters::edge_is_constrained_map(line));
   check_invariants(vd);
   // each cell is one region; the left site still reaches the right of the line, but only
   // around the end, so its cell there is connected to the rest through y > 0.6

@@ -1,12 +1,9 @@
 // CGAL::draw() for a diagram (CGAL/draw_surface_voronoi_diagram.h) without the Qt viewer: it
-// compiles, prints a message and returns; the deprecated header and function of 0.1
-// (CGAL/Surface_voronoi_diagram/draw.h, Surface_voronoi::draw()) still forward to it.
+// compiles, prints a message and returns. The deprecated header and function of 0.1
+// (CGAL/Surface_voronoi_diagram/draw.h, Surface_voronoi::draw()) are tested in
+// test_deprecated.cpp, with the other deprecated names.
 #include "test_support.h"
 
-// the deprecated header warns when included, and the deprecated function when called: both
-// are used here on purpose
-#define CGAL_NO_DEPRECATION_WARNINGS
-#include <CGAL/Surface_voronoi_diagram/draw.h>
 #include <CGAL/draw_surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
@@ -44,14 +41,5 @@ TEST_CASE("draw: without the Qt viewer it compiles, prints a message and returns
 #ifndef CGAL_USE_BASIC_VIEWER
   CHECK(captured_cerr([&] { CGAL::draw(vd); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
   CHECK(captured_cerr([&] { CGAL::draw(vd, "a title"); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
-  // the deprecated alias of 0.1 forwards to CGAL::draw()
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-#endif
-  CHECK(captured_cerr([&] { SV::draw(vd); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
 #endif
 }

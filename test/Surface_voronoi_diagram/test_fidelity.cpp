@@ -53,9 +53,8 @@ TEST_CASE("fidelity: RVD on a U-fold reaches through the gap, biharmonic does no
   GEN::make_u_fold(m, uo);
   const auto sites = area_uniform_locations(m, 30, 8);
   Euclidean e(m);
-  SV::Diagram_options o;
-  o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> rvd(m, e, sites, o);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> rvd(m, e, sites,
+                                                     SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
   CGAL::Biharmonic_embedding<Mesh> b(m);
   CGAL::Surface_voronoi_diagram<Mesh> bvd(m, b, sites);
   const svd_bench::Fidelity_report fr = svd_bench::measure_fidelity(rvd, 1500, 2, 8);

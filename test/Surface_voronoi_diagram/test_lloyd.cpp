@@ -1,8 +1,8 @@
-// Tests of CGAL/Surface_voronoi_diagram/lloyd.h: centroidal relaxation and its energy.
+// Tests of CGAL/Surface_voronoi_diagram/lloyd_relaxation.h: centroidal relaxation and its energy.
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <test_meshes.h>
 
 using namespace svd_test;
@@ -15,9 +15,9 @@ TEST_CASE("lloyd: the energy of the RVD with the Euclidean metric never increase
   Mesh m;
   GEN::make_torus(m, 1.0, 0.4, 60, 24);
   Euclidean e(m);
-  SV::Diagram_options o;
-  o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-  const auto r = SV::lloyd_relaxation(m, e, area_uniform_locations(m, 80, 3), 8, o);
+  const auto r = SV::lloyd_relaxation(m, e, area_uniform_locations(m, 80, 3),
+                                      SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST,
+                                                                          CGAL::parameters::number_of_iterations(8)));
   REQUIRE(r.energies.size() == 9);
   for(std::size_t k = 1; k < r.energies.size(); ++k)
     CHECK(r.energies[k] <= r.energies[k - 1] * (1 + 1e-12));
@@ -44,13 +44,13 @@ TEST_CASE("lloyd: Euclidean propagation and the biharmonic metric relax and stay
   GEN::make_thin_lampshade(m, lo);
   Euclidean e(m);
   const auto start = area_uniform_locations(m, 60, 9);
-  const auto re = SV::lloyd_relaxation(m, e, start, 5);
+  const auto re = SV::lloyd_relaxation(m, e, start, CGAL::parameters::number_of_iterations(5));
   CHECK(re.energies.back() < re.energies.front());
   CGAL::Surface_voronoi_diagram<Mesh, Euclidean> final_e(m, e, re.sites);
   check_invariants(final_e);
 
   CGAL::Biharmonic_embedding<Mesh> b(m);
-  const auto rb = SV::lloyd_relaxation(m, b, start, 5);
+  const auto rb = SV::lloyd_relaxation(m, b, start, CGAL::parameters::number_of_iterations(5));
   CHECK(rb.energies.size() == 6);
   CGAL::Surface_voronoi_diagram<Mesh> final_b(m, b, rb.sites);
   check_invariants(final_b);

@@ -21,9 +21,9 @@ TEST_CASE("power: all-zero weights give exactly the plain diagram", "[power]")
   GEN::make_torus(m, 1.0, 0.35, 40, 16);
   const auto sites = area_uniform_locations(m, 60, 4);
   CGAL::Biharmonic_embedding<Mesh> e(m);
-  SV::Diagram_options zero;
-  zero.weights.assign(sites.size(), 0.);
-  CGAL::Surface_voronoi_diagram<Mesh> plain(m, e, sites), weighted(m, e, sites, zero);
+  const std::vector<double> zero(sites.size(), 0.);
+  CGAL::Surface_voronoi_diagram<Mesh> plain(m, e, sites),
+                                      weighted(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(zero)));
   REQUIRE(SV::internal::Diagram_access::data(plain).partition.pieces.size() == SV::internal::Diagram_access::data(weighted).partition.pieces.size());
   for(std::size_t p = 0; p < SV::internal::Diagram_access::data(plain).partition.pieces.size(); ++p)
   {
@@ -40,14 +40,13 @@ TEST_CASE("power: raising one weight never shrinks that cell", "[power]")
   GEN::make_icosphere(m, 4, 1.0);
   const auto sites = area_uniform_locations(m, 50, 7);
   Euclidean e(m);
-  SV::Diagram_options o;
-  o.weights.assign(sites.size(), 0.);
+  std::vector<double> weights(sites.size(), 0.);
   double previous = -1;
   std::size_t grew = 0;
   for(double w : { 0.0, 0.01, 0.02, 0.05, 0.1, 0.2 })
   {
-    o.weights[3] = w;
-    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, o);
+    weights[3] = w;
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
     check_invariants(vd, false);
     CHECK(vd.site_of(vd.site_location(3)) == 3);
     CHECK(vd.cell_area(3) >= previous);
@@ -63,10 +62,9 @@ TEST_CASE("power: a site with a very low weight may own nothing and is reported"
   GEN::make_icosphere(m, 3, 1.0);
   const auto sites = area_uniform_locations(m, 30, 2);
   Euclidean e(m);
-  SV::Diagram_options o;
-  o.weights.assign(sites.size(), 0.);
-  o.weights[5] = -10.0;   // farther than anything on a unit sphere (squared distances <= 4)
-  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, o);
+  std::vector<double> weights(sites.size(), 0.);
+  weights[5] = -10.0;   // farther than anything on a unit sphere (squared distances <= 4)
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
   CHECK(vd.cell_area(5) == 0);
   CHECK(vd.number_of_pieces(5) == 0);
   CHECK(vd.statistics().empty_cells == 1);
@@ -108,12 +106,12 @@ TEST_CASE("power: a vertex weight map gives exactly the diagram of the equivalen
   // every vertex has a weight, sites or not: only the sites' may be read
   auto w = m.add_property_map<Mesh::Vertex_index, float>("v:weight", 0.f).first;
   for(Mesh::Vertex_index v : vertices(m)) w[v] = float(std::size_t(v) % 7) * 0.01f;
-  SV::Diagram_options by_index;
-  for(Mesh::Vertex_index v : sites) by_index.weights.push_back(double(w[v]));
+  std::vector<double> by_index;
+  for(Mesh::Vertex_index v : sites) by_index.push_back(double(w[v]));
   Euclidean e(m);
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Diagram;
-  Diagram from_vector(m, e, sites, by_index);
-  Diagram from_map(m, e, sites, SV::Diagram_options(), SV::parameters::site_weight_map(w));
+  Diagram from_vector(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(by_index)));
+  Diagram from_map(m, e, sites, SV::parameters::site_weight_map(w));
   require_same_partition(from_map, from_vector);
   check_invariants(from_map, false);
   // and the weights did change the diagram, so the comparison means something
@@ -122,12 +120,12 @@ TEST_CASE("power: a vertex weight map gives exactly the diagram of the equivalen
   for(std::size_t i = 0; i < sites.size(); ++i) changed += (plain.cell_area(i) != from_map.cell_area(i));
   CHECK(changed > sites.size() / 2);
 
-  // both given and equal is accepted; the map chains with CGAL's named parameters
+  // the map chains with CGAL's named parameters, as the head of the chain or appended to it
+  // (the deprecated Diagram_options given together with the map: test_deprecated.cpp)
   auto none = m.add_property_map<Mesh::Edge_index, bool>("e:none", false).first;
-  Diagram both(m, e, sites, by_index, SV::parameters::site_weight_map(w).edge_is_constrained_map(none));
-  require_same_partition(both, from_vector);
-  Diagram appended(m, e, sites, SV::Diagram_options(),
-                   SV::parameters::site_weight_map(w, CGAL::parameters::edge_is_constrained_map(none)));
+  Diagram chained(m, e, sites, SV::parameters::site_weight_map(w).edge_is_constrained_map(none));
+  require_same_partition(chained, from_vector);
+  Diagram appended(m, e, sites, SV::parameters::site_weight_map(w, CGAL::parameters::edge_is_constrained_map(none)));
   require_same_partition(appended, from_vector);
 }
 
@@ -142,13 +140,13 @@ TEST_CASE("power: a weight map on point sites, with the RVD baseline", "[power]"
     sites.push_back(point_of(l, m));
     weight_of[sites.back()] = (sites.size() % 5 == 0) ? 0.3 : 0.;
   }
-  SV::Diagram_options by_index, rvd;
-  for(const Point& p : sites) by_index.weights.push_back(weight_of[p]);
-  rvd.candidates = by_index.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
+  std::vector<double> by_index;
+  for(const Point& p : sites) by_index.push_back(weight_of[p]);
+  const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST);
   Euclidean e(m);
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Diagram;
-  Diagram from_vector(m, e, sites, by_index);
-  Diagram from_map(m, e, sites, rvd, SV::parameters::site_weight_map(boost::make_assoc_property_map(weight_of)));
+  Diagram from_vector(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(by_index), rvd));
+  Diagram from_map(m, e, sites, SV::parameters::site_weight_map(boost::make_assoc_property_map(weight_of), rvd));
   require_same_partition(from_map, from_vector);
   CHECK(from_map.site_weight(4) == 0.3);
 }

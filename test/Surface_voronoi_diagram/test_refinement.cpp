@@ -22,20 +22,24 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
   Mesh m;
   GEN::make_torus(m, 1.0, 0.35, 10, 5);   // coarse: 50 vertices, long thin faces
   const auto sites = area_uniform_locations(m, 200, 5);
-  const auto r = SV::refine_for_sites(m, sites);
+  Mesh refined;
+  auto input_face = refined.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input_face").first;
+  const auto r = SV::refine_for_sites(m, sites, refined, CGAL::parameters::default_values(),
+                                      SV::parameters::input_face_map(input_face));
+  REQUIRE(!r.vertex_limit_reached);
   REQUIRE(r.edges_split > 0);
-  CHECK(CGAL::is_valid_polygon_mesh(r.mesh));
-  CHECK(CGAL::is_triangle_mesh(r.mesh));
-  CHECK(PMP::area(r.mesh) == Approx(PMP::area(m)).epsilon(1e-12));
+  CHECK(CGAL::is_valid_polygon_mesh(refined));
+  CHECK(CGAL::is_triangle_mesh(refined));
+  CHECK(PMP::area(refined) == Approx(PMP::area(m)).epsilon(1e-12));
   // every edge is below the trigger, and the ones the refinement made are near the target
   std::size_t long_edges = 0;
-  for(auto e : edges(r.mesh))
-    long_edges += std::sqrt(PMP::squared_edge_length(e, r.mesh)) > r.target_edge_length * 0.75 / 0.4;
+  for(auto e : edges(refined))
+    long_edges += std::sqrt(PMP::squared_edge_length(e, refined)) > r.target_edge_length * 0.75 / 0.4;
   CHECK(long_edges == 0);
 
   // every refined face lies inside its input face: the areas add up face by face
   std::map<Mesh::Face_index, double> area_by_input;
-  for(auto f : faces(r.mesh)) area_by_input[r.input_face[f]] += PMP::face_area(f, r.mesh);
+  for(auto f : faces(refined)) area_by_input[input_face[f]] += PMP::face_area(f, refined);
   std::size_t wrong = 0;
   for(auto f : faces(m)) wrong += std::abs(area_by_input[f] - PMP::face_area(f, m)) > 1e-12 * PMP::area(m);
   CHECK(wrong == 0);
@@ -43,25 +47,34 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
   REQUIRE(r.sites.size() == sites.size());
   double moved = 0;
   for(std::size_t i = 0; i < sites.size(); ++i)
-    moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(sites[i], m), point_of(r.sites[i], r.mesh)))));
+    moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(sites[i], m), point_of(r.sites[i], refined)))));
   CHECK(moved < 1e-12);
 
   // a fine mesh is left as it is; so is a mesh whose edges are all below the trigger
-  const auto again = SV::refine_for_sites(r.mesh, r.sites);
+  Mesh again_mesh;
+  const auto again = SV::refine_for_sites(refined, r.sites, again_mesh);
+  CHECK(!again.vertex_limit_reached);
   CHECK(again.edges_split == 0);
-  CHECK(num_vertices(again.mesh) == num_vertices(r.mesh));
-  SV::Refinement_options lenient;
-  lenient.trigger_ratio = 100;
-  CHECK(SV::refine_for_sites(m, sites, lenient).edges_split == 0);
+  CHECK(num_vertices(again_mesh) == num_vertices(refined));
+  Mesh lenient_mesh;
+  const auto lenient = SV::refine_for_sites(m, sites, lenient_mesh, SV::parameters::refinement_trigger_ratio(100));
+  CHECK(!lenient.vertex_limit_reached);
+  CHECK(lenient.edges_split == 0);
   // refinement is deterministic
-  const auto twice = SV::refine_for_sites(m, sites);
+  Mesh twice_mesh;
+  const auto twice = SV::refine_for_sites(m, sites, twice_mesh);
+  CHECK(!twice.vertex_limit_reached);
+  REQUIRE(num_vertices(twice_mesh) == num_vertices(refined));
   std::size_t same = 0;
-  for(auto v : vertices(r.mesh)) same += (twice.mesh.point(v) == r.mesh.point(v));
-  CHECK(same == num_vertices(r.mesh));
+  for(auto v : vertices(refined)) same += (twice_mesh.point(v) == refined.point(v));
+  CHECK(same == num_vertices(refined));
 
-  SV::Refinement_options tiny;
-  tiny.max_vertices = 100;
-  CHECK_THROWS_AS(SV::refine_for_sites(m, sites, tiny), SV::Input_error);
+  // too few vertices allowed: the refinement stops there and says so (the deprecated overload
+  // threw Input_error instead: test_deprecated.cpp)
+  Mesh tiny_mesh;
+  const auto tiny = SV::refine_for_sites(m, sites, tiny_mesh, SV::parameters::refinement_max_vertices(100));
+  CHECK(tiny.vertex_limit_reached);
+  CHECK(num_vertices(tiny_mesh) <= 100);
 }
 
 TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinement][geodesic]")
@@ -74,9 +87,11 @@ TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinem
   CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > coarse(m, coarse_metric, sites);
   const svd_bench::Fidelity_report before = svd_bench::measure_fidelity(coarse, 3000, 17, 0);
 
-  const auto r = SV::refine_for_sites(m, sites);
-  SV::Geodesic_metric<Mesh> metric(r.mesh);
-  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > fine(r.mesh, metric, r.sites);
+  Mesh refined;
+  const auto r = SV::refine_for_sites(m, sites, refined);
+  REQUIRE(!r.vertex_limit_reached);
+  SV::Geodesic_metric<Mesh> metric(refined);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > fine(refined, metric, r.sites);
   check_invariants(fine);
   const svd_bench::Fidelity_report after = svd_bench::measure_fidelity(fine, 3000, 17, 4);
   INFO("mislabeled: coarse " << before.mislabeled_share << ", refined " << after.mislabeled_share);

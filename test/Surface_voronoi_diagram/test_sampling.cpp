@@ -24,9 +24,9 @@ TEST_CASE("sampling: blue noise is deterministic, has N sites, and keeps them ap
 {
   Mesh m;
   GEN::make_icosphere(m, 4, 1.0);
-  const auto a = SV::blue_noise_sites(m, 300, 7);
-  const auto b = SV::blue_noise_sites(m, 300, 7);
-  const auto c = SV::blue_noise_sites(m, 300, 8);
+  const auto a = SV::blue_noise_sites(m, 300, CGAL::parameters::random_seed(7));
+  const auto b = SV::blue_noise_sites(m, 300, CGAL::parameters::random_seed(7));
+  const auto c = SV::blue_noise_sites(m, 300, CGAL::parameters::random_seed(8));
   REQUIRE(a.size() == 300);
   bool same = true, differ = false;
   for(std::size_t i = 0; i < a.size(); ++i)
@@ -36,7 +36,7 @@ TEST_CASE("sampling: blue noise is deterministic, has N sites, and keeps them ap
   }
   CHECK(same);
   CHECK(differ);
-  const auto r = SV::random_sites(m, 300, 7);
+  const auto r = SV::random_sites(m, 300, CGAL::parameters::random_seed(7));
   // on the unit sphere with 300 sites, a hexagonal packing spaces them about 0.22 apart
   const double blue = min_distance(m, a), random = min_distance(m, r);
   INFO("minimum distance: blue noise " << blue << ", random " << random);

@@ -37,7 +37,7 @@ using Location = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, doub
 template <class TriangleMesh>
 std::vector<Location<TriangleMesh> > area_uniform_locations(const TriangleMesh& tm, std::size_t n, unsigned seed)
 {
-  return CGAL::Surface_voronoi::random_sites(tm, n, seed);
+  return CGAL::Surface_voronoi::random_sites(tm, n, CGAL::parameters::random_seed(seed));
 }
 
 template <class TriangleMesh>

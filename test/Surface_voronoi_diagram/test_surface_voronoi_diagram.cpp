@@ -176,9 +176,8 @@ TEST_CASE("diagram: RVD labels equal the brute-force nearest site", "[diagram][r
     INFO("mesh " << k++);
     Euclidean e(m);
     const auto sites = area_uniform_locations(m, 120, 17);
-    SV::Diagram_options o;
-    o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites, o);
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites,
+                                                      SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
     std::vector<Point> sp;
     for(const auto& s : sites) sp.push_back(point_of(s, m));
     std::size_t wrong = 0, checked = 0;
@@ -224,9 +223,8 @@ TEST_CASE("diagram: biharmonic cells do not reach through thin walls, RVD cells 
     Biharmonic b(m);
     CGAL::Surface_voronoi_diagram<Mesh> vb(m, b, sites);
     Euclidean e(m);
-    SV::Diagram_options o;
-    o.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vr(m, e, sites, o);
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vr(m, e, sites,
+                                                      SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
     const svd_bench::Fidelity_report bh = svd_bench::measure_fidelity(vb, 2000, 1234, 40);
     const svd_bench::Fidelity_report rvd = svd_bench::measure_fidelity(vr, 2000, 1234, 6);
     INFO(names[k] << ": area through a wall, biharmonic <= " << bh.through_wall_upper << ", RVD >= " << rvd.through_wall_lower);
