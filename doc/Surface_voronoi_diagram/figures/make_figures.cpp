@@ -88,7 +88,7 @@ void metrics_figure(const std::string& dir, const std::string& data)
 {
   Mesh mesh;
   read_lampshade(data, mesh);
-  const std::vector<Location> sites = SV::random_sites(mesh, 60, 7);
+  const std::vector<Location> sites = SV::random_sites(mesh, 60, CGAL::parameters::random_seed(7));
   // from above and aside: the outside and, through the top opening, the inside wall
   const Render_options o = panel(300, 300, {{-0.6, -1.0, -1.2}});
   struct Row { std::string name; std::function<Image()> render; };
@@ -110,9 +110,8 @@ void metrics_figure(const std::string& dir, const std::string& data)
      }},
     {"rvd", [&] {
        SV::Euclidean_embedding<Mesh> metric(mesh);
-       SV::Diagram_options rvd;
-       rvd.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
-       CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, sites, rvd);
+       CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(
+           mesh, metric, sites, SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
        return svd_figures::render_diagram(diagram, o);
      }},
   };
@@ -127,7 +126,7 @@ void readme_figure(const std::string& dir, const std::string& data)
   Mesh mesh;
   read_lampshade(data, mesh);
   CGAL::Biharmonic_embedding<Mesh> metric(mesh);
-  CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, 60, 7));
+  CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, SV::random_sites(mesh, 60, CGAL::parameters::random_seed(7)));
   save(dir, "svd_lampshade.png", svd_figures::render_diagram(diagram, panel(480, 360, {{-0.6, -1.0, -1.2}})));
 }
 
@@ -136,16 +135,15 @@ void power_figure(const std::string& dir)
 {
   Mesh mesh;
   GEN::make_torus(mesh, 1.0, 0.4, 96, 36);
-  const std::vector<Location> sites = SV::random_sites(mesh, 40, 3);
+  const std::vector<Location> sites = SV::random_sites(mesh, 40, CGAL::parameters::random_seed(3));
   SV::Euclidean_embedding<Mesh> metric(mesh);
   const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
   std::vector<Image> panels;
-  SV::Diagram_options options;
-  options.weights.assign(sites.size(), 0.);
-  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  std::vector<double> weights(sites.size(), 0.);
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites), o));
   // every fourth site gets a large weight (squared units: the torus tube radius is 0.4)
-  for(std::size_t i = 0; i < sites.size(); i += 4) options.weights[i] = 0.08;
-  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, options), o));
+  for(std::size_t i = 0; i < sites.size(); i += 4) weights[i] = 0.08;
+  panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights))), o));
   save(dir, "svd_power.png", beside(panels));
 }
 
@@ -165,14 +163,14 @@ void breaklines_figure(const std::string& dir)
   for(Mesh::Edge_index e : mesh.edges())
     breakline[e] = on_lines(mesh.point(mesh.source(mesh.halfedge(e)))) && on_lines(mesh.point(mesh.target(mesh.halfedge(e))));
   std::vector<K::Point_3> sites;
-  for(const Location& l : SV::random_sites(mesh, 14, 11)) sites.push_back(CGAL::Polygon_mesh_processing::construct_point(l, mesh));
+  for(const Location& l : SV::random_sites(mesh, 14, CGAL::parameters::random_seed(11))) sites.push_back(CGAL::Polygon_mesh_processing::construct_point(l, mesh));
   sites.push_back(K::Point_3(0.7, 0.7, 0));   // one site inside the loop
   SV::Euclidean_embedding<Mesh> metric(mesh);
   const Render_options o = panel(316, 300, {{0.0, 0.35, -1.0}});
   std::vector<Image> panels;
   panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites), o));
   panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(
-      mesh, metric, sites, SV::Diagram_options(), CGAL::parameters::edge_is_constrained_map(breakline)), o));
+      mesh, metric, sites, CGAL::parameters::edge_is_constrained_map(breakline)), o));
   save(dir, "svd_breaklines.png", beside(panels));
 }
 
@@ -181,9 +179,9 @@ void lloyd_figure(const std::string& dir)
 {
   Mesh mesh;
   GEN::make_icosphere(mesh, 4, 1.0);
-  const std::vector<Location> sites = SV::random_sites(mesh, 80, 2);
+  const std::vector<Location> sites = SV::random_sites(mesh, 80, CGAL::parameters::random_seed(2));
   SV::Euclidean_embedding<Mesh> metric(mesh);
-  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, sites, 10);
+  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, sites, CGAL::parameters::number_of_iterations(10));
   const Render_options o = panel(316, 300, {{-0.4, -1.0, -0.5}});
   typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Diagram;
   save(dir, "svd_lloyd.png", beside({svd_figures::render_diagram(Diagram(mesh, metric, sites), o),
@@ -196,7 +194,7 @@ void remeshing_figure(const std::string& dir)
   Mesh mesh;
   GEN::make_torus(mesh, 1.0, 0.4, 96, 36);
   SV::Euclidean_embedding<Mesh> metric(mesh);
-  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, 300, 1), 5);
+  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, 300, CGAL::parameters::random_seed(1)), CGAL::parameters::number_of_iterations(5));
   CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(mesh, metric, relaxed.sites);
   std::vector<K::Point_3> points;
   std::vector<std::array<std::size_t, 3> > triangles;
