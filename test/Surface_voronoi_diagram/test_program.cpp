@@ -535,9 +535,9 @@ Run run_program(const Temp_dir& dir, const std::vector<std::string>& args)
   const fs::path err = dir / ("stderr_run_" + std::to_string(counter) + ".txt");
   // outputs of an earlier run must not pass for outputs of this one
   for(std::size_t i = 0; i + 1 < args.size(); ++i)
-    if(args[i] == "--output" || args[i] == "--sites-out")
+    if((args[i] == "--output" || args[i] == "--sites-out") && fs::is_regular_file(args[i + 1]))
     {
-      std::error_code ec;
+      std::error_code ec;   // only files: a device such as /dev/full is an output under test
       fs::remove(args[i + 1], ec);
     }
   Run r;
@@ -1303,6 +1303,90 @@ TEST_CASE("program: --sites-out round trip reproduces the diagram byte for byte"
     INFO("largest vertex displacement " << moved);
     CHECK(moved <= 1e-12);
   }
+}
+
+TEST_CASE("program: --sites-out keeps the power weights, so a weighted run round-trips", "[program]")
+{
+  Temp_dir dir;
+  const Soup sphere = octahedral_sphere(3);
+  write_mesh(dir / "sphere.off", sphere);
+  const std::string mesh = (dir / "sphere.off").string();
+  // weighted sites: every third of 24 sites gets a weight, one of them negative
+  const std::vector<V3> sites = face_sites(sphere, 24, 7);
+  std::string text;
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    text += point_text(sites[i]) + (i % 3 == 0 ? (i == 3 ? " -0.0125" : " 0.03") : " 0") + "\n";
+  write_bytes(dir / "weighted.txt", text);
+  for(const std::string metric : { "euclidean", "biharmonic" })
+  {
+    INFO("metric " << metric);
+    const Run first = run_program(dir, { mesh, "--sites", (dir / "weighted.txt").string(), "--metric", metric,
+                                         "--output", (dir / "first.ply").string(), "--sites-out",
+                                         (dir / "out.txt").string() });
+    check_success(first);
+    const Run plain = run_program(dir, { mesh, "--sites", (dir / "weighted.txt").string(), "--metric", metric,
+                                         "--output", (dir / "plain.ply").string() });
+    const Run second = run_program(dir, { mesh, "--sites", (dir / "out.txt").string(), "--metric", metric,
+                                          "--output", (dir / "second.ply").string() });
+    check_success(second);
+    CHECK(same_files(dir / "first.ply", dir / "second.ply"));
+    // every line carries its weight, and the weights are the ones given
+    std::istringstream in(read_bytes(dir / "out.txt"));
+    std::string line;
+    std::size_t i = 0, weighted = 0;
+    while(std::getline(in, line))
+    {
+      std::istringstream fields(line);
+      std::vector<double> values;
+      double v;
+      while(fields >> v) values.push_back(v);
+      REQUIRE(values.size() == 4);
+      CHECK(values[3] == (i % 3 == 0 ? (i == 3 ? -0.0125 : 0.03) : 0.));
+      weighted += values[3] != 0;
+      ++i;
+    }
+    CHECK(i == sites.size());
+    CHECK(weighted == 8);
+  }
+  // without weights the file keeps three columns (the unweighted round trip is tested above)
+  const Run unweighted = run_program(dir, { mesh, "--random", "12", "--sites-out", (dir / "three.txt").string() });
+  check_success(unweighted);
+  CHECK(read_sites_out(dir / "three.txt").size() == 12);
+}
+
+TEST_CASE("program: a write that fails is exit 4 with one line, and leaves no file", "[program]")
+{
+  Temp_dir dir;
+  const Soup sphere = octahedral_sphere(2);
+  write_mesh(dir / "sphere.off", sphere);
+  const std::string mesh = (dir / "sphere.off").string();
+  for(const std::string flag : { "--output", "--sites-out", "--dual" })
+  {
+    INFO(flag);
+    // a device that refuses data: the failure shows only when the stream is flushed
+    const Run full = run_program(dir, { mesh, "--random", "30", flag, "/dev/full" });
+    CHECK(full.code == 4);
+    CHECK(count_lines(full.err) == 1);
+    CHECK(full.err.find("/dev/full") != std::string::npos);
+    // a folder that does not exist, and a folder given as the file
+    const Run missing = run_program(dir, { mesh, "--random", "30", flag, (dir / "no" / "x.out").string() });
+    CHECK(missing.code == 4);
+    CHECK(count_lines(missing.err) == 1);
+    const Run folder = run_program(dir, { mesh, "--random", "30", flag, dir.path().string() });
+    CHECK(folder.code == 4);
+    CHECK(folder.err.find("is a directory") != std::string::npos);
+  }
+  // an existing file is replaced whole on success, keeping its permissions (run_program
+  // removes the files of --output and --sites-out before a run, not that of --dual)
+  write_bytes(dir / "old.off", std::string(1 << 20, 'x'));
+  fs::permissions(dir / "old.off", fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  const Run replaced = run_program(dir, { mesh, "--random", "30", "--dual", (dir / "old.off").string() });
+  check_success(replaced);
+  CHECK(read_bytes(dir / "old.off").find("xxxx") == std::string::npos);
+  CHECK(fs::status(dir / "old.off").permissions() == (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
+  // nothing but the files written on purpose is in the folder: no temporary left behind
+  for(const auto& entry : fs::directory_iterator(dir.path()))
+    CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
 }
 
 TEST_CASE("program: the same command twice gives byte-identical output", "[program]")

@@ -30,8 +30,9 @@
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/IO/OFF.h>
 
+#include "output_file.h"
 #include "read_checked_mesh.h"
 #include "sites_file.h"
 #include "write_arrangement_PLY.h"
@@ -44,6 +45,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -255,8 +257,13 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     std::vector<Point> points;
     std::vector<std::array<std::size_t, 3> > triangles;
     const bool manifold = SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
-    if(!CGAL::IO::write_polygon_soup(args.dual, points, triangles, CGAL::parameters::stream_precision(17)))
-      fail(4, "cannot write '" + args.dual + "'");
+    try
+    {
+      write_output_file(args.dual, false, [&](std::ostream& os) {
+        return CGAL::IO::write_OFF(os, points, triangles, CGAL::parameters::stream_precision(17));
+      });
+    }
+    catch(const Write_error& e) { fail(4, e.what()); }
     if(!manifold)
       std::cerr << "surface_voronoi: warning: the dual triangulation is not a manifold (some cell is not a disk; "
                    "more sites help)" << std::endl;
@@ -507,10 +514,17 @@ int run_main(int argc, char** argv)
       std::cout << "lloyd_energy_" << k << ": " << lloyd_energies[k] << "\n";
   if(!args.sites_out.empty())
   {
-    std::ofstream os(args.sites_out);
-    if(!os) fail(4, "cannot open '" + args.sites_out + "' for writing");
-    write_sites_file(os, site_points);
-    if(!os) fail(4, "failed to write '" + args.sites_out + "'");
+    // the weights go with the sites, so that a power diagram reads back as the same diagram
+    try
+    {
+      write_output_file(args.sites_out, false, [&](std::ostream& os) {
+        try { write_sites_file(os, site_points, choices.weights); }
+        catch(const Input_error&) { if(os) throw; }   // a failed stream: the system says why
+        return static_cast<bool>(os);
+      });
+    }
+    catch(const Write_error& e) { fail(4, e.what()); }
+    catch(const Input_error& e) { fail(4, "cannot write '" + args.sites_out + "': " + e.what()); }
   }
   return 0;
 }
@@ -520,6 +534,9 @@ int run_main(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+  // A write past a file-size limit must fail with an error the program reports (exit 4), not
+  // end the process before it can remove its partial file.
+  std::signal(SIGXFSZ, SIG_IGN);
   try
   {
     return svd_program::run_main(argc, argv);

@@ -19,6 +19,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include "output_file.h"
+
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -40,24 +42,23 @@ CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> arrangement_for_PLY(
   return out;
 }
 
-/// Writes the arrangement to `filename` (binary little-endian PLY, or ASCII with 17 digits).
+/// Writes the arrangement to `filename` (binary little-endian PLY, or ASCII with 17 digits),
+/// with `write_output_file()`: a failed write leaves no partial file.
 /// \throws Write_error if the file cannot be written
 template <class Diagram>
 void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, bool binary = true)
 {
-  auto mesh = arrangement_for_PLY(diagram);
-  std::ofstream os(filename, binary ? std::ios::binary : std::ios::out);
-  if(!os)
-    throw Write_error("cannot open '" + filename + "' for writing");
-  if(binary)
-    CGAL::IO::set_binary_mode(os);
-  else
-  {
-    CGAL::IO::set_ascii_mode(os);
-    os.precision(17);
-  }
-  if(!CGAL::IO::write_PLY(os, mesh, "surface_voronoi arrangement") || !os)
-    throw Write_error("failed to write '" + filename + "'");
+  const auto mesh = arrangement_for_PLY(diagram);
+  write_output_file(filename, binary, [&](std::ostream& os) {
+    if(binary)
+      CGAL::IO::set_binary_mode(os);
+    else
+    {
+      CGAL::IO::set_ascii_mode(os);
+      os.precision(17);
+    }
+    return CGAL::IO::write_PLY(os, mesh, "surface_voronoi arrangement") && static_cast<bool>(os);
+  });
 }
 
 } // namespace svd_program
