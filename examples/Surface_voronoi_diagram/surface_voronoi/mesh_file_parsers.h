@@ -150,8 +150,9 @@ inline std::string line_text(std::size_t line) { return "line " + std::to_string
 class Text_cursor
 {
 public:
-  Text_cursor(const char* begin, const char* end, char comment)
-    : next_(begin), end_(end), comment_(comment)
+  // `lines_before`: how many lines of the file come before `begin`
+  Text_cursor(const char* begin, const char* end, char comment, std::size_t lines_before = 0)
+    : next_(begin), end_(end), lines_seen_(lines_before), comment_(comment)
   {}
 
   // Moves to the next record; false at the end of the buffer.
@@ -255,7 +256,7 @@ private:
   const char* token_ = nullptr;
   const char* record_end_ = nullptr;
   std::size_t line_ = 0;
-  std::size_t lines_seen_ = 0;
+  std::size_t lines_seen_;
   char comment_;
   bool newline_ = false;
 };
@@ -786,7 +787,7 @@ void parse_ply(const char* data, std::size_t size, std::vector<Point_3>& points,
   auto face_name = [](std::uint64_t r) { return "face " + std::to_string(r); };
   if(format == ascii)
   {
-    Text_cursor in(p, end, '\0');
+    Text_cursor in(p, end, '\0', line);
     std::string_view token;
     // the ascii body: every value is a token; records need not be one a line
     auto next_value = [&](const Ply_element& e, std::uint64_t record, const Ply_property& prop, Ply_type type,
