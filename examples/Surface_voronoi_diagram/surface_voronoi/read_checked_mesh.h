@@ -11,11 +11,19 @@
 // or abort. On the soup every defect can be detected and reported with the
 // index of the offending vertex or face as it appears in the file.
 //
+// The files are parsed by the program's own bounded parsers (mesh_file_parsers.h), not by
+// CGAL's stream readers: no file can crash the reader, make it loop or allocate beyond a
+// small multiple of its size, and every error in a file's structure names the line (text
+// formats) or the element (binary formats). Limits: a mesh file has at most
+// `max_mesh_file_bytes` bytes (2 GiB), a polygon at most `max_polygon_corners` corners
+// (10 million). `read_checked_triangle_mesh_from_memory()` is the fuzzing entry point.
+//
 // Contract (relied upon by outside checks of the program):
 //  - vertex index = order of the vertex in the file, 0-based (for STL, which has
 //    no shared vertices, the order of first appearance of each distinct point);
 //  - face index = order of the polygon in the file, 0-based;
-//  - polygons with more than 3 vertices are triangulated;
+//  - polygons with more than 3 vertices are triangulated (ear clipping up to 256 corners,
+//    as always; a constrained Delaunay triangulation in O(n log n) above);
 //  - a non-finite coordinate, a zero-area face, a non-manifold edge or vertex,
 //    a non-orientable surface or an empty mesh is an error naming the element;
 //  - inconsistently oriented faces are re-oriented, not rejected;
@@ -663,10 +671,12 @@ void check_polygon_soup(const std::vector<Point_3>& points,
 /// Builds a triangle mesh from a polygon soup held in memory, after checking it
 /// with `check_polygon_soup()`.
 ///
-/// Polygons with more than 3 vertices are triangulated by ear clipping in a
-/// projection onto the coordinate plane closest to the polygon's plane, which
-/// is correct for simple planar polygons, convex or not (and for mildly warped
-/// ones). Faces are re-oriented consistently with
+/// Polygons with more than 3 vertices are triangulated in a projection onto the
+/// coordinate plane closest to the polygon's plane, which is correct for simple planar
+/// polygons, convex or not (and for mildly warped ones): by ear clipping up to
+/// `internal::ear_clipping_max_corners` (256) corners, above by a constrained Delaunay
+/// triangulation of the projected polygon without Steiner points (O(n log n); a polygon
+/// whose projection is not simple is refused). Faces are re-oriented consistently with
 /// `CGAL::Polygon_mesh_processing::orient_polygon_soup()` when needed. Points
 /// used by no polygon are left out of `mesh`, but errors still use the indices
 /// of `points`; errors about a triangle made from a polygon name the polygon.

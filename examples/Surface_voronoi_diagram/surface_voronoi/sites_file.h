@@ -221,7 +221,12 @@ inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_re
   return records;
 }
 
-/// Reads a sites file: each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
+/// Reads a sites file from a stream (e.g. an `std::istringstream` over bytes in memory, which
+/// is how the sites reader's fuzzing harness calls it): any bytes give either the sites or
+/// an svd_program::Input_error, with memory bounded by one line (`max_record_line_length`)
+/// plus the sites read (at most `max_records_in_file`).
+///
+/// Each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
 /// with the grammar of `tokenize_records()`. Numbers are parsed with `std::strtod`,
 /// which must consume the whole field, so the program's LC_NUMERIC locale must use
 /// '.' as decimal point (true unless the program changes it with `setlocale()`).
@@ -342,7 +347,8 @@ void write_sites_file(std::ostream& out, const PointRange& points,
 
 /// Reads records of two non-negative decimal integers (e.g. the vertex indices
 /// of a breaklines file), with the grammar of `tokenize_records()`. Signs are
-/// not accepted.
+/// not accepted. Like `read_sites_file(std::istream&)`, it takes any bytes (the breaklines
+/// reader's fuzzing entry point), in memory bounded by one line plus the records read.
 ///
 /// \param in the stream to read to its end
 /// \param file_kind how messages name the file, e.g. `breaklines file`
