@@ -339,7 +339,7 @@ TEST_CASE("read: OFF header counts are bounded by the file, and must match its c
              Catch::Contains("line 4: vertex 1 has 2 coordinates, expected 3 (x y z)"));
   CHECK_THAT(error_of("OFFF\n4 4 0\n", "off"), Catch::Contains("line 1: expected the keyword OFF, found 'OFFF'"));
   CHECK_THAT(error_of("4OFF\n4 4 0\n", "off"), Catch::Contains("line 1: the OFF variant '4OFF' is not supported"));
-  CHECK_THAT(error_of("OFF BINARY\n", "off"), Catch::Contains("binary OFF is not supported"));
+  CHECK_THAT(error_of("COFF BINARY\n", "off"), Catch::Contains("binary COFF is not supported"));
   CHECK_THAT(error_of("OFF\n4 four 0\n", "off"), Catch::Contains("line 2: expected the counts 'vertices faces edges', found 'four'"));
   CHECK_THAT(error_of("", "off"), Catch::Contains("the file is empty"));
   // a COFF line cut inside its colour (CGAL's colour scanner read past the buffer)
@@ -364,6 +364,46 @@ TEST_CASE("read: OFF variants, comments and colours give the same tetrahedron", 
     const Soup s = parse(text, "off");
     CHECK(s.points == plain.points);
     CHECK(s.polygons == plain.polygons);
+  }
+}
+
+TEST_CASE("read: binary OFF gives the tetrahedron; its counts and indices are checked", "[io][mesh][parsers]")
+{
+  for(bool normals : { false, true })
+  {
+    std::string bin = normals ? "# c\nNOFF BINARY\n" : "OFF BINARY\n";
+    for(std::int32_t c : { 4, 4, 0 })
+      put(bin, c, true);
+    const float v[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    for(const auto& p : v)
+    {
+      for(float c : p)
+        put(bin, c, true);
+      if(normals)
+        for(float c : { 0.f, 0.f, 1.f })
+          put(bin, c, true);
+    }
+    const std::int32_t f[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+    for(int i = 0; i < 4; ++i)
+    {
+      put(bin, std::int32_t(3), true);
+      for(std::int32_t k : f[i])
+        put(bin, k, true);
+      put(bin, std::int32_t(i % 2 ? 3 : 0), true); // colour components
+      for(int k = 0; k < (i % 2 ? 3 : 0); ++k)
+        put(bin, 0.5f, true);
+    }
+    const Soup s = parse(bin, "off");
+    const Soup t = parse(tet_off, "off");
+    CHECK(s.points == t.points);
+    CHECK(s.polygons == t.polygons);
+    std::string huge = bin;
+    huge.replace(huge.find("BINARY\n") + 7 + 4, 4, std::string("\x7f\xff\xff\xff", 4));
+    CHECK_THAT(error_of(huge, "off"), Catch::Contains("binary OFF: the header declares 4 vertices and 2147483647 faces"));
+    std::string index = bin;
+    index.replace(index.size() - 12 - 4 - 4, 4, std::string("\0\0\0\x09", 4)); // last face, last index
+    CHECK_THAT(error_of(index, "off"), Catch::Contains("face 3: vertex index 9 is out of range"));
+    CHECK_THAT(error_of(bin + "x", "off"), Catch::Contains("binary OFF: 1 bytes after the 4 faces"));
   }
 }
 

@@ -20,7 +20,11 @@
 //    line or the next one); one vertex a line, whose first 3 numbers are x y z (the others,
 //    colour, normal or texture numbers, are skipped); one face a line, `n i1 ... in` followed
 //    by optional colour numbers (skipped); `#` starts a comment. A line with content after the
-//    declared faces is an error. `4OFF`, `nOFF` and binary OFF are refused.
+//    declared faces is an error. `4OFF` and `nOFF` are refused. Binary OFF (`OFF BINARY` or
+//    `NOFF BINARY`, the data after the keyword's line; CGAL 5.5 could not read it): big-endian
+//    int32 counts, float32 x y z [nx ny nz] a vertex, int32 n, n int32 indices, int32 k and k
+//    float32 colour components a face; errors name the vertex or face. Binary OFF with vertex
+//    colours or texture coordinates is refused.
 //  - OBJ: `v x y z [w]` and `f a b c ...` records, each corner written `i`, `i/t`, `i//n` or
 //    `i/t/n`, 1-based, negative = relative to the last vertex so far; other records skipped;
 //    `#` starts a comment. The file must end with a line end after its last face (a face line
@@ -243,6 +247,8 @@ public:
   bool record_has_line_end() const { return newline_; }
   // bytes after the current line
   std::size_t bytes_left() const { return std::size_t(end_ - next_); }
+  // where the line after the current record starts
+  const char* next_line_start() const { return next_; }
   // whether anything other than blanks, line ends and comments remains after the current record
   bool only_blank_left()
   {
@@ -264,6 +270,10 @@ private:
 // ----------------------------------------------------------------------------------- OFF
 
 inline std::string vertices_text(std::size_t n) { return std::to_string(n) + (n == 1 ? " vertex" : " vertices"); }
+
+template <class Point_3>
+void parse_binary_off(const char* begin, const char* end, bool normals, std::vector<Point_3>& points,
+                      Polygons& polygons);
 
 template <class Point_3>
 void parse_off(const char* data, std::size_t size, std::vector<Point_3>& points, Polygons& polygons)
@@ -293,7 +303,14 @@ void parse_off(const char* data, std::size_t size, std::vector<Point_3>& points,
     std::string_view rest = in.rest_of_record();
     while(!rest.empty() && is_blank(rest.front())) rest.remove_prefix(1);
     if(rest.substr(0, 6) == "BINARY")
-      throw Input_error(line_text(in.line()) + "binary OFF is not supported (write the file as text OFF)");
+    {
+      const std::string_view k = keyword.substr(0, keyword.size() - 3);
+      if(k.find('C') != std::string_view::npos || k.find('T') != std::string_view::npos)
+        throw Input_error(line_text(in.line()) + "binary " + printable_text(keyword) +
+                          " is not supported (binary OFF with colours or texture coordinates; write it as text)");
+      parse_binary_off(in.next_line_start(), data + size, k.find('N') != std::string_view::npos, points, polygons);
+      return;
+    }
   }
   else if(!in.next_record())
     throw Input_error(line_text(in.lines_seen()) + "the file ends before the counts (vertices faces edges)");
@@ -977,6 +994,91 @@ void parse_ply(const char* data, std::size_t size, std::vector<Point_3>& points,
         throw Input_error((polygon_line.empty() ? std::string() : line_text(polygon_line[f])) + face_name(f) +
                           ": vertex index " + std::to_string(v) + " is out of range (the file has " +
                           vertices_text(static_cast<std::size_t>(nv)) + ")");
+}
+
+// ---------------------------------------------------------------------------- binary OFF
+
+template <class Point_3>
+void parse_binary_off(const char* begin, const char* end, bool normals, std::vector<Point_3>& points,
+                      Polygons& polygons)
+{
+  Ply_binary_source in(reinterpret_cast<const unsigned char*>(begin), reinterpret_cast<const unsigned char*>(end), true);
+  Ply_value v;
+  std::int64_t counts[3];
+  for(std::int64_t& c : counts)
+  {
+    if(!in.read(Ply_type::int32, v))
+      throw Input_error("binary OFF: the file ends inside the counts");
+    c = v.integer;
+  }
+  if(counts[0] < 0 || counts[1] < 0)
+    throw Input_error("binary OFF: the header declares a negative count (" + std::to_string(counts[0]) + " vertices, " +
+                      std::to_string(counts[1]) + " faces)");
+  const std::uint64_t nv = std::uint64_t(counts[0]), nf = std::uint64_t(counts[1]);
+  const std::uint64_t vertex_bytes = 12 + (normals ? 12 : 0), face_bytes = 20;
+  if(nv * vertex_bytes + nf * face_bytes > in.bytes_left())
+    throw Input_error("binary OFF: the header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+                      " faces, but the remaining " + std::to_string(in.bytes_left()) + " bytes cannot hold them");
+  points.clear();
+  polygons.clear();
+  points.reserve(static_cast<std::size_t>(nv));
+  polygons.reserve(static_cast<std::size_t>(nf));
+  auto skip_colour = [&](const std::string& element) {
+    if(!in.read(Ply_type::int32, v))
+      throw Input_error(element + ": the file ends inside the record");
+    if(v.integer < 0 || v.integer > 4)
+      throw Input_error(element + ": " + std::to_string(v.integer) + " colour components (at most 4)");
+    if(std::uint64_t(v.integer) * 4 > in.bytes_left())
+      throw Input_error(element + ": the file ends inside the record");
+    in.skip(std::size_t(v.integer) * 4);
+  };
+  for(std::uint64_t i = 0; i < nv; ++i)
+  {
+    const std::string element = "vertex " + std::to_string(i);
+    double c[3];
+    for(double& x : c)
+    {
+      if(!in.read(Ply_type::float32, v))
+        throw Input_error(element + ": the file ends inside the record");
+      x = v.real;
+    }
+    if(normals)
+    {
+      if(in.bytes_left() < 12)
+        throw Input_error(element + ": the file ends inside the record");
+      in.skip(12);
+    }
+    points.emplace_back(c[0], c[1], c[2]);
+  }
+  for(std::uint64_t f = 0; f < nf; ++f)
+  {
+    const std::string element = "face " + std::to_string(f);
+    if(!in.read(Ply_type::int32, v))
+      throw Input_error(element + ": the file ends inside the record");
+    if(v.integer < 3)
+      throw Input_error(element + " has " + std::to_string(v.integer) + " vertices (a face needs at least 3)");
+    const std::uint64_t degree = std::uint64_t(v.integer);
+    if(degree * 4 > in.bytes_left())
+      throw Input_error(element + " declares " + std::to_string(degree) + " vertices but only " +
+                        std::to_string(in.bytes_left()) + " bytes remain");
+    if(degree > max_polygon_corners)
+      throw Input_error(element + " has " + std::to_string(degree) + " vertices; the largest polygon accepted has " +
+                        std::to_string(max_polygon_corners));
+    std::vector<std::size_t> polygon(static_cast<std::size_t>(degree));
+    for(std::size_t& index : polygon)
+    {
+      in.read(Ply_type::int32, v);
+      if(v.integer < 0 || std::uint64_t(v.integer) >= nv)
+        throw Input_error(element + ": vertex index " + std::to_string(v.integer) + " is out of range (the file has " +
+                          vertices_text(static_cast<std::size_t>(nv)) + ")");
+      index = static_cast<std::size_t>(v.integer);
+    }
+    skip_colour(element);
+    polygons.push_back(std::move(polygon));
+  }
+  if(in.bytes_left() != 0)
+    throw Input_error("binary OFF: " + std::to_string(in.bytes_left()) + " bytes after the " + std::to_string(nf) +
+                      " faces the header declares");
 }
 
 // ----------------------------------------------------------------------------------- STL
