@@ -11,11 +11,19 @@
 // or abort. On the soup every defect can be detected and reported with the
 // index of the offending vertex or face as it appears in the file.
 //
+// The files are parsed by the program's own bounded parsers (mesh_file_parsers.h), not by
+// CGAL's stream readers: no file can crash the reader, make it loop or allocate beyond a
+// small multiple of its size, and every error in a file's structure names the line (text
+// formats) or the element (binary formats). Limits: a mesh file has at most
+// `max_mesh_file_bytes` bytes (2 GiB), a polygon at most `max_polygon_corners` corners
+// (10 million). `read_checked_triangle_mesh_from_memory()` is the fuzzing entry point.
+//
 // Contract (relied upon by outside checks of the program):
 //  - vertex index = order of the vertex in the file, 0-based (for STL, which has
 //    no shared vertices, the order of first appearance of each distinct point);
 //  - face index = order of the polygon in the file, 0-based;
-//  - polygons with more than 3 vertices are triangulated;
+//  - polygons with more than 3 vertices are triangulated (ear clipping up to 256 corners,
+//    as always; a constrained Delaunay triangulation in O(n log n) above);
 //  - a non-finite coordinate, a zero-area face, a non-manifold edge or vertex,
 //    a non-orientable surface or an empty mesh is an error naming the element;
 //  - inconsistently oriented faces are re-oriented, not rejected;
@@ -25,9 +33,15 @@
 #define SVD_PROGRAM_READ_CHECKED_MESH_H
 
 #include "errors.h"
+#include "input_file.h"
+#include "mesh_file_parsers.h"
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_face_base_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -361,8 +375,8 @@ void check_soup_elements(const std::vector<Point_3>& points,
 // Returns false when no ear can be found, i.e. the polygon is not simple in
 // that projection (self-intersecting, or too warped).
 template <class Point_3>
-bool triangulate_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
-                         std::vector<std::array<std::size_t, 3>>& triangles)
+bool ear_clip_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                      std::vector<std::array<std::size_t, 3>>& triangles)
 {
   typedef Checking_kernel::Point_2 Point_2;
   const std::size_t n = polygon.size();
@@ -469,6 +483,143 @@ bool triangulate_polygon(const std::vector<Point_3>& points, const std::vector<s
   return true;
 }
 
+// Polygons with more corners than this are triangulated by `cdt_triangulate_polygon()`,
+// the others by ear clipping (quadratic, but its triangles are the ones the program has
+// always made, so small polygons keep their triangulation bit for bit).
+constexpr std::size_t ear_clipping_max_corners = 256;
+
+// Triangulation of a large polygon in O(n log n): the constrained Delaunay triangulation
+// of its projection (the same coordinate plane as `ear_clip_polygon()`), with the polygon's
+// edges as constraints and no Steiner point, keeping the triangles inside. Returns false
+// when the projected polygon is not simple: two corners project to one point, two edges
+// cross or overlap, or an edge runs through a corner (the triangulation throws, or the
+// polygon's edges are not all edges of it, or it has other than n - 2 inner triangles).
+template <class Point_3>
+bool cdt_triangulate_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                             std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  typedef Checking_kernel K;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K> Vb;
+  typedef CGAL::Constrained_triangulation_face_base_2<K> Cfb;
+  typedef CGAL::Triangulation_face_base_with_info_2<int, K, Cfb> Fb; // nesting level, -1 unset
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag> CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  const std::size_t n = polygon.size();
+
+  double normal[3] = { 0, 0, 0 };
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const Checking_kernel::Point_3 a = to_checking_point(points[polygon[j]]);
+    const Checking_kernel::Point_3 b = to_checking_point(points[polygon[(j + 1) % n]]);
+    normal[0] += (a.y() - b.y()) * (a.z() + b.z());
+    normal[1] += (a.z() - b.z()) * (a.x() + b.x());
+    normal[2] += (a.x() - b.x()) * (a.y() + b.y());
+  }
+  int axis = 0;
+  for(int k = 1; k < 3; ++k)
+    if(std::abs(normal[k]) > std::abs(normal[axis]))
+      axis = k;
+  if(!(std::abs(normal[axis]) > 0))
+    return false;
+  const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+  const bool counterclockwise = normal[axis] > 0;
+
+  std::vector<std::pair<K::Point_2, std::size_t>> q(n);
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const Checking_kernel::Point_3 p = to_checking_point(points[polygon[j]]);
+    q[j] = std::make_pair(K::Point_2(p[u_axis], p[v_axis]), j);
+  }
+  CDT cdt;
+  std::vector<Vertex_handle> handle(n);
+  try
+  {
+    cdt.insert(q.begin(), q.end());
+    if(cdt.number_of_vertices() != n || cdt.dimension() != 2)
+      return false; // two corners on one point
+    for(Vertex_handle v : cdt.finite_vertex_handles())
+      handle[v->info()] = v;
+    for(std::size_t j = 0; j < n; ++j)
+      cdt.insert_constraint(handle[j], handle[(j + 1) % n]);
+  }
+  catch(const typename CDT::Intersection_of_constraints_exception&)
+  {
+    return false;
+  }
+  for(std::size_t j = 0; j < n; ++j)
+    if(!cdt.is_edge(handle[j], handle[(j + 1) % n]))
+      return false; // an edge was split by a corner lying on it
+  if(cdt.number_of_vertices() != n)
+    return false;
+
+  // Faces reached from the outside crossing an odd number of constraints are inside.
+  for(Face_handle f : cdt.all_face_handles())
+    f->info() = -1;
+  std::vector<Face_handle> stack, next_stack;
+  stack.push_back(cdt.infinite_face());
+  cdt.infinite_face()->info() = 0;
+  int depth = 0;
+  while(!stack.empty())
+  {
+    while(!stack.empty())
+    {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i)
+      {
+        const Face_handle g = f->neighbor(i);
+        if(g->info() != -1)
+          continue;
+        if(f->is_constrained(i))
+          next_stack.push_back(g);
+        else
+        {
+          g->info() = depth;
+          stack.push_back(g);
+        }
+      }
+    }
+    ++depth;
+    for(const Face_handle& g : next_stack)
+      if(g->info() == -1)
+      {
+        g->info() = depth;
+        stack.push_back(g);
+      }
+    next_stack.clear();
+  }
+  const std::size_t first = triangles.size();
+  for(Face_handle f : cdt.finite_face_handles())
+  {
+    if(f->info() != 1)
+      continue;
+    const std::size_t a = f->vertex(0)->info(), b = f->vertex(1)->info(), c = f->vertex(2)->info();
+    if(counterclockwise)
+      triangles.push_back({ polygon[a], polygon[b], polygon[c] });
+    else
+      triangles.push_back({ polygon[a], polygon[c], polygon[b] });
+  }
+  if(triangles.size() - first != n - 2)
+  {
+    triangles.resize(first);
+    return false;
+  }
+  return true;
+}
+
+// Triangulates a polygon: ear clipping up to `ear_clipping_max_corners` corners, a
+// constrained Delaunay triangulation above. Returns false if the polygon is not simple.
+template <class Point_3>
+bool triangulate_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                         std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  if(polygon.size() <= ear_clipping_max_corners)
+    return ear_clip_polygon(points, polygon, triangles);
+  return cdt_triangulate_polygon(points, polygon, triangles);
+}
+
 inline std::string lower_case_extension(const std::string& filename)
 {
   const std::size_t dot = filename.find_last_of('.');
@@ -520,10 +671,12 @@ void check_polygon_soup(const std::vector<Point_3>& points,
 /// Builds a triangle mesh from a polygon soup held in memory, after checking it
 /// with `check_polygon_soup()`.
 ///
-/// Polygons with more than 3 vertices are triangulated by ear clipping in a
-/// projection onto the coordinate plane closest to the polygon's plane, which
-/// is correct for simple planar polygons, convex or not (and for mildly warped
-/// ones). Faces are re-oriented consistently with
+/// Polygons with more than 3 vertices are triangulated in a projection onto the
+/// coordinate plane closest to the polygon's plane, which is correct for simple planar
+/// polygons, convex or not (and for mildly warped ones): by ear clipping up to
+/// `internal::ear_clipping_max_corners` (256) corners, above by a constrained Delaunay
+/// triangulation of the projected polygon without Steiner points (O(n log n); a polygon
+/// whose projection is not simple is refused). Faces are re-oriented consistently with
 /// `CGAL::Polygon_mesh_processing::orient_polygon_soup()` when needed. Points
 /// used by no polygon are left out of `mesh`, but errors still use the indices
 /// of `points`; errors about a triangle made from a polygon name the polygon.
@@ -634,108 +787,44 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
 }
 
 
+
 namespace internal {
 
-// CGAL's text readers stop at "nan" or "inf" without saying where. To still name the
-// vertex, scan the vertex records of an OFF, OBJ or ASCII PLY file for a coordinate that
-// does not parse to a finite number. Returns false when nothing was found.
-inline bool find_bad_text_vertex(const std::string& filename, const std::string& ext,
-                                 std::size_t& vertex, std::string& token)
+// Parses a whole file held in memory and builds the checked mesh; `where` names the file.
+template <class TriangleMesh>
+Mesh_reading_report read_checked_triangle_mesh_from_buffer(const char* data, std::size_t size,
+                                                           const std::string& format, const std::string& where,
+                                                           TriangleMesh& mesh)
 {
-  std::ifstream in(filename);
-  if(!in) return false;
-  auto bad = [&](const std::string& t) {
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    return end != t.c_str() + t.size() || !std::isfinite(v);
-  };
-  auto split = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::istringstream ls(line.substr(0, line.find('#')));
-    std::string t;
-    while(ls >> t) out.push_back(t);
-    return out;
-  };
-  std::string line;
-  if(ext == "obj")
+  typedef typename internal::Mesh_point<TriangleMesh>::type Point;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  try
   {
-    std::size_t index = 0;
-    while(std::getline(in, line))
-    {
-      const std::vector<std::string> t = split(line);
-      if(t.empty() || t[0] != "v") continue;
-      for(std::size_t k = 1; k < t.size() && k <= 3; ++k)
-        if(bad(t[k])) { vertex = index; token = t[k]; return true; }
-      ++index;
-    }
-    return false;
+    mesh_parsers::parse_mesh(data, size, format, points, polygons);
+    return build_checked_triangle_mesh(points, polygons, mesh);
   }
-  if(ext == "off")
+  catch(const Input_error& e)
   {
-    std::vector<std::string> tokens;
-    while(tokens.empty() && std::getline(in, line)) tokens = split(line);
-    if(tokens.empty() || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0) return false;
-    tokens.erase(tokens.begin());
-    while(tokens.size() < 3 && std::getline(in, line))
-    {
-      const std::vector<std::string> more = split(line);
-      tokens.insert(tokens.end(), more.begin(), more.end());
-    }
-    if(tokens.empty()) return false;
-    const std::size_t nv = static_cast<std::size_t>(std::strtoull(tokens[0].c_str(), nullptr, 10));
-    std::size_t index = 0;
-    while(index < nv && std::getline(in, line))
-    {
-      const std::vector<std::string> t = split(line);
-      if(t.empty()) continue;
-      for(std::size_t k = 0; k < t.size() && k < 3; ++k)
-        if(bad(t[k])) { vertex = index; token = t[k]; return true; }
-      ++index;
-    }
-    return false;
+    throw Input_error(where + ": " + e.what());
   }
-  if(ext == "ply")
-  {
-    std::size_t nv = 0, property = 0;
-    int xyz[3] = { -1, -1, -1 };
-    bool in_vertex = false, ascii = false;
-    while(std::getline(in, line))
-    {
-      const std::vector<std::string> t = split(line);
-      if(t.empty()) continue;
-      if(t[0] == "format") ascii = (t.size() > 1 && t[1] == "ascii");
-      else if(t[0] == "element") { in_vertex = (t.size() > 2 && t[1] == "vertex"); if(in_vertex) nv = std::strtoull(t[2].c_str(), nullptr, 10); }
-      else if(t[0] == "property" && in_vertex && t.size() >= 3)
-      {
-        const std::string& name = t.back();
-        if(name == "x") xyz[0] = int(property);
-        if(name == "y") xyz[1] = int(property);
-        if(name == "z") xyz[2] = int(property);
-        ++property;
-      }
-      else if(t[0] == "end_header") break;
-    }
-    if(!ascii) return false;
-    for(std::size_t index = 0; index < nv && std::getline(in, line); ++index)
-    {
-      const std::vector<std::string> t = split(line);
-      for(int c : xyz)
-        if(c >= 0 && std::size_t(c) < t.size() && bad(t[std::size_t(c)])) { vertex = index; token = t[std::size_t(c)]; return true; }
-    }
-  }
-  return false;
 }
 
 } // namespace internal
 
-/// Reads a triangle mesh a mesh file as a polygon soup, checks it and builds a triangle mesh
+/// Reads a triangle mesh from a mesh file as a polygon soup, checks it and builds a triangle mesh
 /// with `build_checked_triangle_mesh()`.
 ///
 /// The format is chosen from the extension (case-insensitive): `.off`, `.obj`,
-/// `.ply` or `.stl`. Vertex indices in messages are the order of the vertices in
+/// `.ply` or `.stl`; the grammar accepted for each is described in mesh_file_parsers.h.
+/// The file is read into memory in one piece, and may have at most `max_mesh_file_bytes`
+/// bytes (2 GiB); every count in it is bounded by what its bytes can hold before anything
+/// is allocated, so no file makes the reader crash, hang or exhaust memory.
+/// Vertex indices in messages are the order of the vertices in
 /// the file (0-based); for STL, which repeats the corners of every triangle,
 /// identical points are merged by the reader and numbered in order of first
-/// appearance. Face indices are the order of the polygons in the file.
+/// appearance. Face indices are the order of the polygons in the file. Errors in the
+/// file's structure name the line (text formats) or the element (binary formats).
 ///
 /// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal
 ///         `CGAL::vertex_point_t` property map, e.g. `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`
@@ -743,60 +832,57 @@ inline bool find_bad_text_vertex(const std::string& filename, const std::string&
 /// \param mesh the output; cleared first, and left untouched if an error is thrown
 /// \pre nothing: any defect of the file is reported by an exception
 /// \throws svd_program::Input_error when the extension is not one of the
-///         above, the file cannot be opened or parsed, or the soup fails the
+///         above, the file cannot be opened (missing, a directory, unreadable) or is too
+///         large, cannot be parsed (e.g. `mesh file 'x.off': line 7: face 1 declares
+///         2147483647 vertices but the file ends after 3`), or the soup fails the
 ///         checks of `build_checked_triangle_mesh()`; the message starts with
-///         `mesh file 'FILE'`
+///         `mesh file 'FILE'` and holds printable ASCII only
 /// \returns what was done to the soup (triangulation, re-orientation, isolated points)
 template <class TriangleMesh>
 Mesh_reading_report read_checked_triangle_mesh(const std::string& filename, TriangleMesh& mesh)
 {
-  typedef typename internal::Mesh_point<TriangleMesh>::type Point;
-  const std::string where = "mesh file '" + filename + "'";
+  const std::string where = "mesh file '" + printable_text(filename) + "'";
 
   const std::string ext = internal::lower_case_extension(filename);
   if(ext.empty())
     throw Input_error(where + ": no file extension to tell the format (expected .off, .obj, .ply or .stl)");
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-    throw Input_error(where + ": unknown extension '." + ext + "' (expected .off, .obj, .ply or .stl)");
-  {
-    std::ifstream probe(filename, std::ios::binary);
-    if(!probe)
-      throw Input_error(where + ": cannot open the file");
-  }
+    throw Input_error(where + ": unknown extension '." + printable_text(ext, max_echoed_token_length) +
+                      "' (expected .off, .obj, .ply or .stl)");
+  std::string contents;
+  read_whole_file(filename, where, max_mesh_file_bytes, contents);
+  return internal::read_checked_triangle_mesh_from_buffer(contents.data(), contents.size(), ext, where, mesh);
+}
 
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
-  try
-  {
-    ok = CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
-  }
-  catch(const std::exception&)
-  {
-    // Some CGAL readers throw on malformed content instead of returning false.
-    ok = false;
-  }
-  if(!ok)
-  {
-    std::string format = ext;
-    for(char& c : format)
-      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    std::size_t vertex = 0;
-    std::string token;
-    if(internal::find_bad_text_vertex(filename, ext, vertex, token))
-      throw Input_error(where + ": vertex " + std::to_string(vertex) + " has a non-finite or unreadable coordinate ('"
-                        + token.substr(0, 40) + "')");
-    throw Input_error(where + ": cannot be read as " + format + " (malformed or unsupported content)");
-  }
-
-  try
-  {
-    return build_checked_triangle_mesh(points, polygons, mesh);
-  }
-  catch(const Input_error& e)
-  {
-    throw Input_error(where + ": " + e.what());
-  }
+/// Reads a triangle mesh from a mesh file held in memory: the same parsing, checks and
+/// messages as `read_checked_triangle_mesh(filename, mesh)`, without touching the disk.
+///
+/// This is the entry point of the mesh readers' fuzzing harnesses: any `data` must give
+/// either a mesh or an svd_program::Input_error (never a crash, a hang, or memory beyond a
+/// small multiple of `size`), so a harness can call it on every input and catch
+/// `Input_error` only; anything else it sees is a bug.
+///
+/// \tparam TriangleMesh as for `read_checked_triangle_mesh()`
+/// \param data the bytes of the file (need not be null-terminated)
+/// \param size the number of bytes; at most `max_mesh_file_bytes`
+/// \param format `off`, `obj`, `ply` or `stl` (lower case)
+/// \param mesh the output; cleared first, and left untouched if an error is thrown
+/// \param name how messages name the data, as `mesh file 'NAME'`
+/// \pre nothing
+/// \throws svd_program::Input_error as `read_checked_triangle_mesh()`, and for an unknown format
+/// \returns what was done to the soup
+template <class TriangleMesh>
+Mesh_reading_report read_checked_triangle_mesh_from_memory(const char* data, std::size_t size,
+                                                           const std::string& format, TriangleMesh& mesh,
+                                                           const std::string& name = "memory")
+{
+  const std::string where = "mesh file '" + printable_text(name) + "'";
+  if(format != "off" && format != "obj" && format != "ply" && format != "stl")
+    throw Input_error(where + ": unknown format " + quoted_token(format) + " (expected off, obj, ply or stl)");
+  if(size > max_mesh_file_bytes)
+    throw Input_error(where + ": the file is too large (" + std::to_string(size) + " bytes; the largest file read is " +
+                      std::to_string(max_mesh_file_bytes) + " bytes)");
+  return internal::read_checked_triangle_mesh_from_buffer(data, size, format, where, mesh);
 }
 
 /// Checks a triangle mesh already in memory, for the same defects as

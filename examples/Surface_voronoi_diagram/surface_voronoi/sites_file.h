@@ -15,6 +15,7 @@
 #define SVD_PROGRAM_SITES_FILE_H
 
 #include "errors.h"
+#include "input_file.h"
 
 #include <CGAL/number_utils.h>
 
@@ -58,27 +59,11 @@ struct Index_pair_record
 
 namespace internal {
 
-// Tokens go into messages verbatim; control bytes or a huge token would make a
-// one-line message unreadable, so they are escaped and shortened.
+// Tokens go into messages escaped (control bytes and bytes outside ASCII as \xNN) and
+// shortened, so that a message stays one readable line of printable ASCII.
 inline std::string printable_token(const std::string& token)
 {
-  const std::size_t max_length = 40;
-  std::string out;
-  for(std::size_t i = 0; i < token.size() && i < max_length; ++i)
-  {
-    const unsigned char c = static_cast<unsigned char>(token[i]);
-    if(c < 0x20 || c == 0x7f)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\x%02X", static_cast<unsigned>(c));
-      out += buffer;
-    }
-    else
-      out += static_cast<char>(c);
-  }
-  if(token.size() > max_length)
-    out += "...";
-  return out;
+  return printable_text(token, max_echoed_token_length);
 }
 
 inline std::string line_prefix(const std::string& file_kind, std::size_t line)
@@ -145,30 +130,62 @@ inline std::string format_double(double v)
 
 } // namespace internal
 
+/// The longest line the record files (sites, breaklines) may have, in bytes.
+constexpr std::size_t max_record_line_length = 65536;
+
+/// The most records (sites, or breaklines pairs) a record file may hold.
+constexpr std::size_t max_records_in_file = 10000000;
+
 /// Splits a stream into records following the grammar shared by the program's
 /// text files: one record a line, fields separated by spaces or tabs, `#` to
 /// the end of the line is a comment, lines without fields are skipped, a
-/// trailing CR is dropped.
+/// trailing CR is dropped. Calls `record(line, fields)` for each record as it is read,
+/// so that memory holds one line at a time (at most `max_record_line_length` bytes).
 ///
 /// \param in the stream to read to its end
+/// \param file_kind how messages name the file, e.g. `sites file`
+/// \param record called with the physical line number (1-based) and the fields
+///        (`std::vector<std::string>`) of every line with at least one field
 /// \pre nothing
-/// \returns for every line with at least one field, its physical line number
-///          (1-based) and its fields, in file order
-/// \throws svd_program::Input_error if the stream fails other than by reaching its end
-inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_records(std::istream& in)
+/// \throws svd_program::Input_error if a line is longer than `max_record_line_length`,
+///         or the stream fails other than by reaching its end
+template <class Record_callback>
+void for_each_record(std::istream& in, const std::string& file_kind, Record_callback&& record)
 {
-  std::vector<std::pair<std::size_t, std::vector<std::string>>> records;
   std::string text;
+  std::vector<std::string> fields;
   std::size_t line = 0;
-  while(std::getline(in, text))
+  std::streambuf* buffer = in.rdbuf();
+  bool more = (buffer != nullptr);
+  while(more)
   {
+    text.clear();
+    bool got_any = false;
+    for(;;)
+    {
+      const std::char_traits<char>::int_type c = buffer->sbumpc();
+      if(std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof()))
+      {
+        more = false;
+        break;
+      }
+      got_any = true;
+      if(c == '\n')
+        break;
+      if(text.size() >= max_record_line_length)
+        throw Input_error(internal::line_prefix(file_kind, line + 1) + "the line is longer than " +
+                          std::to_string(max_record_line_length) + " bytes");
+      text.push_back(std::char_traits<char>::to_char_type(c));
+    }
+    if(!got_any)
+      break;
     ++line;
     if(!text.empty() && text.back() == '\r')
       text.pop_back();
     const std::size_t hash = text.find('#');
     if(hash != std::string::npos)
       text.erase(hash);
-    std::vector<std::string> fields;
+    fields.clear();
     std::size_t i = 0;
     while(i < text.size())
     {
@@ -181,14 +198,35 @@ inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_re
         fields.push_back(text.substr(start, i - start));
     }
     if(!fields.empty())
-      records.emplace_back(line, std::move(fields));
+      record(line, static_cast<const std::vector<std::string>&>(fields));
   }
+  in.setstate(std::ios::eofbit);
   if(in.bad())
-    throw Input_error("read error after line " + std::to_string(line));
+    throw Input_error(file_kind + ": read error after line " + std::to_string(line));
+}
+
+/// Splits a stream into records, as `for_each_record()`, and returns them all.
+///
+/// \param in the stream to read to its end
+/// \pre nothing
+/// \returns for every line with at least one field, its physical line number
+///          (1-based) and its fields, in file order
+/// \throws svd_program::Input_error as `for_each_record()`
+inline std::vector<std::pair<std::size_t, std::vector<std::string>>> tokenize_records(std::istream& in)
+{
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> records;
+  for_each_record(in, "file", [&](std::size_t line, const std::vector<std::string>& fields) {
+    records.emplace_back(line, fields);
+  });
   return records;
 }
 
-/// Reads a sites file: each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
+/// Reads a sites file from a stream (e.g. an `std::istringstream` over bytes in memory, which
+/// is how the sites reader's fuzzing harness calls it): any bytes give either the sites or
+/// an svd_program::Input_error, with memory bounded by one line (`max_record_line_length`)
+/// plus the sites read (at most `max_records_in_file`).
+///
+/// Each data line holds 3 or 4 decimal numbers, `x y z [weight]`,
 /// with the grammar of `tokenize_records()`. Numbers are parsed with `std::strtod`,
 /// which must consume the whole field, so the program's LC_NUMERIC locale must use
 /// '.' as decimal point (true unless the program changes it with `setlocale()`).
@@ -205,10 +243,10 @@ inline std::vector<Site_record> read_sites_file(std::istream& in)
 {
   const std::string kind = "sites file";
   std::vector<Site_record> sites;
-  for(const auto& record : tokenize_records(in))
-  {
-    const std::size_t line = record.first;
-    const std::vector<std::string>& fields = record.second;
+  for_each_record(in, kind, [&](std::size_t line, const std::vector<std::string>& fields) {
+    if(sites.size() == max_records_in_file)
+      throw Input_error(internal::line_prefix(kind, line) + "more than " + std::to_string(max_records_in_file) +
+                        " sites (the most a sites file may hold)");
     if(fields.size() != 3 && fields.size() != 4)
       throw Input_error(internal::line_prefix(kind, line) +
                         "expected 3 or 4 numbers (x y z [weight]), found " +
@@ -236,21 +274,24 @@ inline std::vector<Site_record> read_sites_file(std::istream& in)
     site.weight = values[3];
     site.line = line;
     sites.push_back(site);
-  }
+  });
   return sites;
 }
 
 /// Reads a sites file from disk; see `read_sites_file(std::istream&)`.
 /// \param filename the file to read
 /// \pre as `read_sites_file(std::istream&)`
-/// \throws svd_program::Input_error if the file cannot be opened
-///         (`cannot open sites file 'FILE'`) or breaks the grammar
+/// \throws svd_program::Input_error if the file cannot be opened, saying why
+///         (`sites file 'FILE': cannot open the file: no such file`, `... permission denied`,
+///         `sites file 'FILE': is a directory, not a file`), or breaks the grammar
 inline std::vector<Site_record> read_sites_file(const std::string& filename)
 {
+  const std::string what = "sites file '" + printable_text(filename) + "'";
+  check_input_path(filename, what);
   // Binary mode: line ends are handled by the grammar, identically on every platform.
   std::ifstream in(filename, std::ios::binary);
   if(!in)
-    throw Input_error("cannot open sites file '" + filename + "'");
+    throw Input_error(what + ": cannot open the file: " + internal::open_failure_reason(errno ? errno : EACCES));
   return read_sites_file(in);
 }
 
@@ -306,7 +347,8 @@ void write_sites_file(std::ostream& out, const PointRange& points,
 
 /// Reads records of two non-negative decimal integers (e.g. the vertex indices
 /// of a breaklines file), with the grammar of `tokenize_records()`. Signs are
-/// not accepted.
+/// not accepted. Like `read_sites_file(std::istream&)`, it takes any bytes (the breaklines
+/// reader's fuzzing entry point), in memory bounded by one line plus the records read.
 ///
 /// \param in the stream to read to its end
 /// \param file_kind how messages name the file, e.g. `breaklines file`
@@ -320,10 +362,10 @@ inline std::vector<Index_pair_record> parse_index_pairs(std::istream& in,
                                                         const std::string& file_kind = "breaklines file")
 {
   std::vector<Index_pair_record> pairs;
-  for(const auto& record : tokenize_records(in))
-  {
-    const std::size_t line = record.first;
-    const std::vector<std::string>& fields = record.second;
+  for_each_record(in, file_kind, [&](std::size_t line, const std::vector<std::string>& fields) {
+    if(pairs.size() == max_records_in_file)
+      throw Input_error(internal::line_prefix(file_kind, line) + "more than " + std::to_string(max_records_in_file) +
+                        " records (the most a file may hold)");
     if(fields.size() != 2)
       throw Input_error(internal::line_prefix(file_kind, line) +
                         "expected 2 non-negative integers, found " + std::to_string(fields.size()));
@@ -341,8 +383,24 @@ inline std::vector<Index_pair_record> parse_index_pairs(std::istream& in,
     pair.second = values[1];
     pair.line = line;
     pairs.push_back(pair);
-  }
+  });
   return pairs;
+}
+
+/// Reads a breaklines file from disk; see `parse_index_pairs()`.
+/// \param filename the file to read
+/// \pre nothing
+/// \throws svd_program::Input_error if the file cannot be opened, saying why
+///         (`breaklines file 'FILE': cannot open the file: no such file`, `... is a directory,
+///         not a file`), or breaks the grammar
+inline std::vector<Index_pair_record> read_breaklines_file(const std::string& filename)
+{
+  const std::string what = "breaklines file '" + printable_text(filename) + "'";
+  check_input_path(filename, what);
+  std::ifstream in(filename, std::ios::binary);
+  if(!in)
+    throw Input_error(what + ": cannot open the file: " + internal::open_failure_reason(errno ? errno : EACCES));
+  return parse_index_pairs(in);
 }
 
 } // namespace svd_program

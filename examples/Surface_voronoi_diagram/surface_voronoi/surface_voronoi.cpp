@@ -286,10 +286,8 @@ int run_main(int argc, char** argv)
   auto breakline = mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
   if(!args.breaklines.empty())
   {
-    std::ifstream in(args.breaklines);
-    if(!in) fail(1, "cannot open breaklines file '" + args.breaklines + "'");
     std::vector<Index_pair_record> pairs;
-    try { pairs = parse_index_pairs(in); }
+    try { pairs = read_breaklines_file(args.breaklines); }
     catch(const Input_error& e) { fail(1, e.what()); }
     for(const Index_pair_record& r : pairs)
     {
@@ -545,7 +543,9 @@ int main(int argc, char** argv)
   }
   catch(const svd_program::Failure& f)
   {
-    std::cerr << "surface_voronoi: error: " << f.message << (f.code == 2 ? " (see --help)" : "") << std::endl;
+    // whatever a message quotes from a file or the command line, it prints as one line of printable ASCII
+    std::cerr << "surface_voronoi: error: " << svd_program::printable_text(f.message) << (f.code == 2 ? " (see --help)" : "")
+              << std::endl;
     return f.code;
   }
   catch(const std::bad_alloc&)
@@ -555,7 +555,7 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "surface_voronoi: error: " << e.what() << std::endl;
+    std::cerr << "surface_voronoi: error: " << svd_program::printable_text(e.what()) << std::endl;
     return 3;
   }
 }
