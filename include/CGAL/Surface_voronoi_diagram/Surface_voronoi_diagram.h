@@ -510,7 +510,7 @@ private:
                Surface_voronoi::internal::Stage_timer& timer, std::true_type)
   {
     namespace SVi = Surface_voronoi::internal;
-    CGAL_precondition_msg(!is_cancelled_metric(metric), "the embedding was cancelled");
+    CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
     m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
     timer.stop("setup");
     SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values> builder(m_data, *m_data.embedding, settings, callback, times);
@@ -529,8 +529,11 @@ private:
   }
 
   template <class M>
-  static bool is_cancelled_metric(const M& m, decltype(std::declval<const M&>().is_cancelled())* = nullptr) { return m.is_cancelled(); }
-  static bool is_cancelled_metric(...) { return false; }
+  static auto is_cancelled_metric(const M& m, int) -> decltype(bool(m.is_cancelled())) { return m.is_cancelled(); }
+  // (not a C variadic: a metric is not trivially copyable, and passing it through "..." is
+  // only conditionally supported; Clang refuses it)
+  template <class M>
+  static bool is_cancelled_metric(const M&, long) { return false; }
 
   void cancel()
   {

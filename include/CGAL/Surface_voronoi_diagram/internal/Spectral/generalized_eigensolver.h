@@ -32,6 +32,7 @@
 #include <functional>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -178,9 +179,19 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     auto solve = [&](Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
       ncv = (std::min)(n, ncv);
       Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, want, ncv, sigma);
-      solver.init();
-      const Eigen::Index converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol,
-                                                    Spectra::SortRule::SmallestAlge);
+      Eigen::Index converged = 0;
+      try
+      {
+        solver.init();
+        converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol, Spectra::SortRule::SmallestAlge);
+      }
+      catch(const std::runtime_error& e)
+      {
+        // Spectra throws when a dense step meets non-finite values (its tridiagonal
+        // eigen-decomposition, its QR): a numerical failure of this mesh, not a bug
+        throw Numerical_error(std::string("the eigen-solver failed (") + e.what()
+                              + "); check the mesh for degenerate triangles or extreme coordinates");
+      }
       r.iterations += static_cast<long>(solver.num_iterations());
       r.operations += static_cast<long>(solver.num_operations());
       ++r.rounds;

@@ -1,0 +1,75 @@
+#!/bin/sh
+# The sanitizer job (.ci/run calls it after the test suite): one Clang build with AddressSanitizer
+# and UndefinedBehaviorSanitizer, without NDEBUG (so CGAL's assertions and preconditions are
+# on), of the program, the precondition tests and the libFuzzer harnesses. It then runs
+#  1. the precondition tests;
+#  2. the program over the whole bad-input corpus (test/Surface_voronoi_diagram/bad_input);
+#  3. the program on two small real meshes of CGAL's data set (the bundled meshes without it);
+#  4. each fuzzer over its committed seed corpus, then for a fixed seed and number of runs,
+#     so that the job is deterministic (SVD_FUZZ_RUNS overrides the number of runs).
+# Any sanitizer report, failed case or crash fails the job.
+set -e
+cd "$(dirname "$0")/.."
+
+need=""
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || need="$need $p"
+done
+if [ -n "$need" ]; then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "installing:$need"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $need >/dev/null
+fi
+
+build=build/sanitize
+flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"
+CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
+  -DSVD_BUILD_TESTS=ON -DSVD_BUILD_FUZZERS=ON >/dev/null
+cmake --build $build -j2 --target surface_voronoi svd_precondition_tests fuzz_mesh_reader fuzz_sites_reader fuzz_pipeline
+
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:allocator_may_return_null=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+program=$build/surface_voronoi
+fuzz=$build/test/Surface_voronoi_diagram/fuzz
+work=$build/sanitizer_runs
+rm -rf $work && mkdir -p $work
+
+echo "== precondition tests (ASan+UBSan, assertions on)"
+$build/test/Surface_voronoi_diagram/svd_precondition_tests
+
+echo "== the program over the bad-input corpus"
+# sanitizers slow the program down about tenfold and need more address space than 4 GiB
+python3 test/Surface_voronoi_diagram/bad_input/run_bad_input.py $program --work $work/bad_input \
+  --time-factor 10 --no-memory-limit
+
+echo "== the program on small real meshes"
+meshes=$build/cgal_data/data/meshes
+if [ -f $meshes/elephant.off ] && [ -f $meshes/cactus.off ]; then
+  first=$meshes/elephant.off second=$meshes/cactus.off
+else
+  first=examples/Surface_voronoi_diagram/data/torus.off second=examples/Surface_voronoi_diagram/data/lampshade_thin.off
+fi
+for metric in biharmonic geodesic; do
+  $program $first --random 200 --metric $metric --lloyd 2 --output $work/first.ply --dual $work/first.off --stats >/dev/null
+done
+$program $second --blue-noise 60 --metric euclidean --insert-sites --output $work/second.ply --sites-out $work/second.xyz
+$program $second --sites $work/second.xyz --metric rvd --output $work/second_rvd.ply
+
+echo "== fuzzers: the seed corpus, then a fixed seed and number of runs"
+runs=${SVD_FUZZ_RUNS:-4000}
+for harness in fuzz_mesh_reader fuzz_sites_reader fuzz_pipeline; do
+  corpus=test/Surface_voronoi_diagram/fuzz/corpus/${harness#fuzz_}
+  # the committed corpus stays as it is: new inputs go to a copy
+  rm -rf $work/$harness && mkdir -p $work/$harness && cp $corpus/* $work/$harness/
+  $fuzz/$harness -runs=0 $corpus
+  if ! $fuzz/$harness -seed=1 -runs=$runs -max_len=4096 -timeout=20 -rss_limit_mb=4096 \
+       -artifact_prefix=$work/ $work/$harness >$work/$harness.log 2>&1; then
+    tail -n 60 $work/$harness.log
+    echo "$harness failed: the input is in $work/ (crash-*, timeout-* or oom-*)"
+    exit 1
+  fi
+  grep "^Done" $work/$harness.log
+done
+echo "sanitizer job passed"
