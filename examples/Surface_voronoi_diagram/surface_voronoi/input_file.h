@@ -11,6 +11,7 @@
 
 #include "errors.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstddef>
 #include <cstdint>
@@ -170,6 +171,12 @@ inline void read_whole_file(const std::string& filename, const std::string& what
     {
       if(contents.size() + got > max_bytes)
         throw too_large(0);
+      if(contents.capacity() < contents.size() + got)
+      {
+        // grow geometrically, but never past the limit (an endless device stops there)
+        const std::uint64_t wanted = std::max<std::uint64_t>(2 * std::uint64_t(contents.capacity()), contents.size() + got);
+        contents.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(wanted, max_bytes)));
+      }
       contents.append(buffer, got);
     }
     if(got < sizeof(buffer))

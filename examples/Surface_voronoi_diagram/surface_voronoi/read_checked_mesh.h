@@ -49,7 +49,6 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Dynamic_property_map.h>
-#include <CGAL/Union_find.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -182,6 +181,41 @@ private:
   std::string context_;
 };
 
+// Disjoint sets of the indices 0..n-1 in two flat arrays (path halving, union by size):
+// only which elements share a set matters to the callers, not which one represents it.
+class Index_union_find
+{
+public:
+  explicit Index_union_find(std::size_t n) : parent_(n), size_(n, 1)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      parent_[i] = i;
+  }
+  std::size_t find(std::size_t i)
+  {
+    while(parent_[i] != i)
+    {
+      parent_[i] = parent_[parent_[i]];
+      i = parent_[i];
+    }
+    return i;
+  }
+  void unite(std::size_t a, std::size_t b)
+  {
+    a = find(a);
+    b = find(b);
+    if(a == b)
+      return;
+    if(size_[a] < size_[b])
+      std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+  }
+
+private:
+  std::vector<std::size_t> parent_, size_;
+};
+
 // Checks what depends only on the indices: every edge has at most two faces,
 // the faces around every vertex form one fan, and the surface is orientable.
 // Returns whether the faces are already consistently oriented.
@@ -217,11 +251,7 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
 
   // Corners of the same vertex are glued across every edge shared by exactly
   // two faces; the connected classes of corners of a vertex are its fans.
-  CGAL::Union_find<std::size_t> corners;
-  std::vector<CGAL::Union_find<std::size_t>::handle> corner_set;
-  corner_set.reserve(number_of_corners);
-  for(std::size_t c = 0; c < number_of_corners; ++c)
-    corner_set.push_back(corners.make_set(c));
+  Index_union_find corners(number_of_corners);
   std::vector<Face_link> links;
   bool consistently_oriented = true;
   for(std::size_t begin = 0; begin < half_edges.size();)
@@ -245,8 +275,8 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     {
       const Soup_half_edge& a = half_edges[begin];
       const Soup_half_edge& b = half_edges[begin + 1];
-      corners.unify_sets(corner_set[a.corner_lo], corner_set[b.corner_lo]);
-      corners.unify_sets(corner_set[a.corner_hi], corner_set[b.corner_hi]);
+      corners.unite(a.corner_lo, b.corner_lo);
+      corners.unite(a.corner_hi, b.corner_hi);
       links.push_back(Face_link{ a.face, b.face, a.lo, a.hi, a.forward == b.forward });
       if(a.forward == b.forward)
         consistently_oriented = false;
@@ -256,7 +286,7 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
 
   std::vector<std::pair<std::size_t, std::size_t>> vertex_fan(number_of_corners);
   for(std::size_t c = 0; c < number_of_corners; ++c)
-    vertex_fan[c] = std::make_pair(corner_vertex[c], *corners.find(corner_set[c]));
+    vertex_fan[c] = std::make_pair(corner_vertex[c], corners.find(c));
   std::sort(vertex_fan.begin(), vertex_fan.end());
   vertex_fan.erase(std::unique(vertex_fan.begin(), vertex_fan.end()), vertex_fan.end());
   for(std::size_t begin = 0; begin < vertex_fan.size();)
