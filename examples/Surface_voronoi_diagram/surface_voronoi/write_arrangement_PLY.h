@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -40,12 +41,20 @@ CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> arrangement_for_PLY(
   return out;
 }
 
-/// Writes the arrangement to `filename` (binary little-endian PLY, or ASCII with 17 digits).
+/// Writes the arrangement to `filename` (binary little-endian PLY, or ASCII with 17 digits),
+/// its points multiplied by 2^`scale_exponent` (the program's normalization, undone exactly).
 /// \throws Write_error if the file cannot be written
 template <class Diagram>
-void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, bool binary = true)
+void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, bool binary = true, int scale_exponent = 0)
 {
   auto mesh = arrangement_for_PLY(diagram);
+  if(scale_exponent != 0)
+    for(auto v : mesh.vertices())
+    {
+      const auto& p = mesh.point(v);
+      mesh.point(v) = typename decltype(mesh)::Point(std::ldexp(p.x(), scale_exponent), std::ldexp(p.y(), scale_exponent),
+                                                     std::ldexp(p.z(), scale_exponent));
+    }
   std::ofstream os(filename, binary ? std::ios::binary : std::ios::out);
   if(!os)
     throw Write_error("cannot open '" + filename + "' for writing");

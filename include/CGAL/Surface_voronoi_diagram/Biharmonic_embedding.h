@@ -168,6 +168,9 @@ public:
   ///
   /// \pre `tm` is a triangle mesh without faces of zero area
   /// \pre `1 <= d <= maximum_dimension(tm)`
+  /// \throws Surface_voronoi::Input_error in every build if `d > maximum_dimension(tm)` (the
+  ///         message names the maximum); the library does not lower `d` by itself (the
+  ///         `surface_voronoi` program lowers its default of 10 to the maximum, with a note)
   /// \throws Surface_voronoi::Numerical_error if the eigen-solver fails
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Biharmonic_embedding(const TriangleMesh& tm,
@@ -301,6 +304,15 @@ private:
     const Eigen::Index nev = static_cast<Eigen::Index>(dimension + m_zero_modes);
     CGAL_precondition_msg(static_cast<std::size_t>(nev) < mesh->number_of_vertices(),
                           "the mesh has too few vertices for an embedding of this dimension (see maximum_dimension())");
+    // also in release builds: the eigen-solver cannot give more eigenpairs than vertices
+    if(static_cast<std::size_t>(nev) >= mesh->number_of_vertices())
+    {
+      const std::size_t largest = mesh->number_of_vertices() > m_zero_modes + 1 ? mesh->number_of_vertices() - m_zero_modes - 1 : 0;
+      throw Surface_voronoi::Input_error("the mesh has too few vertices for an embedding of dimension " + std::to_string(dimension)
+                                         + ": " + std::to_string(mesh->number_of_vertices()) + " vertices and "
+                                         + std::to_string(m_zero_modes) + " component(s) allow at most "
+                                         + std::to_string(largest) + " (maximum_dimension())");
+    }
     if(callback && !callback(0.1)) { cancel(); return; }
 
     // progress during the solve: the number of operator applications, on a saturating scale
