@@ -130,3 +130,22 @@ TEST_CASE("embedding: the largest dimension a mesh allows, and the largest works
   CHECK(problems.front().kind == SV::Input_problem::ZERO_AREA_FACE);
   CHECK(problems.front().message.find("zero area") != std::string::npos);
 }
+
+#if defined(NDEBUG) || defined(CGAL_NO_PRECONDITIONS)
+TEST_CASE("embedding: a dimension above maximum_dimension() is a clear Input_error in release builds", "[embedding][numerics]")
+{
+  // A tetrahedron allows 2 (4 vertices, one zero eigenvalue); the precondition guards debug
+  // builds (test_preconditions.cpp), this error every other one.
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0));
+  const auto c = m.add_vertex(Point(0, 1, 0)), d = m.add_vertex(Point(0, 0, 1));
+  m.add_face(a, c, b);
+  m.add_face(a, b, d);
+  m.add_face(a, d, c);
+  m.add_face(b, c, d);
+  REQUIRE(CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m) == 2);
+  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(10)), SV::Input_error);
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(3)), Catch::Contains("at most 2"));
+  CHECK(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(2)).dimension() == 2);
+}
+#endif
