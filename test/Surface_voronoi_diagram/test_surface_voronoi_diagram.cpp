@@ -336,8 +336,10 @@ TEST_CASE("diagram: needles and caps (a 1 x 2e-9 rhombus) give finite locations 
   const SVi::Barycentric bc = SVi::barycentric_coordinates(p0, p1, p2, x);
   for(double v : bc) REQUIRE(std::isfinite(v));
   CHECK(std::abs(bc[0] + bc[1] + bc[2] - 1) < 1e-12);
-  // off by at most the triangle's height
-  CHECK(std::sqrt(CGAL::squared_distance(SVi::point_at(p0, p1, p2, bc), x)) <= 1e-9);
+  // the point itself, to a small fraction of the triangle's height
+  CHECK(std::sqrt(CGAL::squared_distance(SVi::point_at(p0, p1, p2, bc), x)) <= 1e-12);
+  // a point on the long edge (of a cap whose other edges meet above it) gets an exact 0
+  CHECK(SVi::barycentric_coordinates(p0, p1, p2, SVi::Point_d(-0.4, 0, 0))[2] == 0);
   // a well-shaped triangle keeps PMP's coordinates bit for bit
   const SVi::Point_d q0(0, 0, 0), q1(1, 0, 0), q2(0.3, 0.8, 0.1), y(0.4, 0.3, 0.05);
   CHECK(!SVi::is_needle(q0, q1, q2));

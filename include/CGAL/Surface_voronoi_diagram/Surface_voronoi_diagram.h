@@ -79,8 +79,8 @@ namespace CGAL {
 /// areas neither overflow nor underflow; a face is degenerate below an area of
 /// \f$ 2^{-44} \f$ (about 5.7e-14) times its squared longest edge. Thinner needles and caps
 /// are valid: barycentric coordinates on a face whose Gram determinant is below
-/// \f$ 2^{-40} \f$ of its scale (where PMP's formula divides by noise or zero) are those of
-/// the projection on its longest edge, off by at most its height there. The biharmonic
+/// \f$ 2^{-40} \f$ of its scale (where PMP's formula divides by noise or zero) are computed
+/// from cross products instead. The biharmonic
 /// metric's eigen-solver may still fail (`Surface_voronoi::Numerical_error`) on caps thinner
 /// than about 1e-10 of their longest edge; the other metrics do not. Callers with data
 /// outside the range scale it by a power of two (exact) first, as the `surface_voronoi`
@@ -526,7 +526,7 @@ private:
                Surface_voronoi::internal::Stage_timer& timer, std::true_type)
   {
     namespace SVi = Surface_voronoi::internal;
-    CGAL_precondition_msg(!is_cancelled_metric(metric), "the embedding was cancelled");
+    CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
     m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
     timer.stop("setup");
     SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values> builder(m_data, *m_data.embedding, settings, callback, times);
@@ -544,9 +544,12 @@ private:
     if(!builder.run()) cancel();
   }
 
+  // metrics without is_cancelled() are never cancelled (chosen by int/long, not by "...":
+  // clang refuses to pass a class object through "..." in builds with preconditions)
   template <class M>
-  static bool is_cancelled_metric(const M& m, decltype(std::declval<const M&>().is_cancelled())* = nullptr) { return m.is_cancelled(); }
-  static bool is_cancelled_metric(...) { return false; }
+  static auto is_cancelled_metric(const M& m, int) -> decltype(bool(m.is_cancelled())) { return m.is_cancelled(); }
+  template <class M>
+  static bool is_cancelled_metric(const M&, long) { return false; }
 
   void cancel()
   {

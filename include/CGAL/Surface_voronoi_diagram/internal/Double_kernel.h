@@ -89,7 +89,7 @@ inline Point_d point_at(const Point_d& p0, const Point_d& p1, const Point_d& p2,
 /// relative to `d00 d11`, is the squared sine of the angle at corner 0. Below this ratio
 /// (2^-40, a sine below about 1e-6) the determinant has lost most of its digits to
 /// cancellation (its relative error is about 2^-52 / ratio) and may even be exactly zero on a
-/// valid needle or cap: `barycentric_coordinates()` then projects on the longest edge instead.
+/// valid needle or cap: `barycentric_coordinates()` then uses cross products instead.
 constexpr double needle_gram_ratio = 0x1p-40;
 
 /// whether the Gram determinant of triangle (p0, p1, p2) at corner 0 is below
@@ -105,18 +105,31 @@ inline bool is_needle(const Point_d& p0, const Point_d& p1, const Point_d& p2)
 
 /// barycentric coordinates of `x` in triangle (p0, p1, p2), of its projection on the
 /// triangle's plane if `x` is off it: the package's one way to compute them. PMP's formula
-/// (the Gram determinant of the edge vectors) wherever it is sound; on a needle or a cap
-/// whose determinant is below `needle_gram_ratio` of `d00 d11` (where the formula divides by
-/// noise or by zero), the projection of `x` on the triangle's longest edge (the third
-/// coordinate 0). The point given back is then off by at most the triangle's height on that
-/// edge, which is below 2^-20 of the edge's length. Never NaN or infinite for finite input
-/// whose squared edge lengths do not overflow; a triangle whose corners coincide gives (1, 0, 0).
+/// (the Gram determinant of the edge vectors) wherever it is sound, bit for bit; on a needle
+/// or a cap whose determinant is below `needle_gram_ratio` of `d00 d11` (where that formula
+/// divides by noise or by zero), the ratios of the areas of the sub-triangles x p_j p_k to
+/// the triangle's, by cross products taken from `x` (their relative error is about 2^-52
+/// over the sine of the triangle's smallest angle, not its square, and a point on the line
+/// of an edge gets an exact 0 where the edge is axis-aligned). A triangle without any
+/// computable normal (coincident or collinear corners, or squares that overflow) gives the
+/// projection of `x` on its longest edge, or (1, 0, 0) if its corners coincide: never NaN
+/// or infinite for finite input.
 inline Barycentric barycentric_coordinates(const Point_d& p0, const Point_d& p1, const Point_d& p2, const Point_d& x)
 {
   if(!is_needle(p0, p1, p2))
     return CGAL::Polygon_mesh_processing::barycentric_coordinates(p0, p1, p2, x, Double_kernel());
-  // the longest edge (a, b): corners ia and ib, the third corner gets 0
   const Point_d* p[3] = { &p0, &p1, &p2 };
+  const Vector_d n = CGAL::cross_product(p1 - p0, p2 - p0);
+  const double nn = n * n;
+  Barycentric b = {{ 0., 0., 0. }};
+  if(nn > 0 && std::isfinite(nn))
+  {
+    for(int k = 0; k < 3; ++k)
+      b[k] = (n * CGAL::cross_product(*p[(k + 1) % 3] - x, *p[(k + 2) % 3] - x)) / nn;
+    if(std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2])) return b;
+    b = {{ 0., 0., 0. }};
+  }
+  // no normal: the longest edge (a, b), corners ia and ib, the third corner gets 0
   int ia = 0;
   double longest = -1;
   for(int k = 0; k < 3; ++k)
@@ -125,7 +138,6 @@ inline Barycentric barycentric_coordinates(const Point_d& p0, const Point_d& p1,
     if(l > longest) { longest = l; ia = k; }
   }
   const int ib = (ia + 1) % 3;
-  Barycentric b = {{ 0., 0., 0. }};
   if(!(longest > 0) || !std::isfinite(longest))
   {
     b[0] = 1.;
