@@ -81,8 +81,9 @@ namespace CGAL {
 /// are valid: barycentric coordinates on a face whose Gram determinant is below
 /// \f$ 2^{-40} \f$ of its scale (where PMP's formula divides by noise or zero) are computed
 /// from cross products instead. The biharmonic
-/// metric's eigen-solver may still fail (`Surface_voronoi::Numerical_error`) on caps thinner
-/// than about 1e-10 of their longest edge; the other metrics do not. Callers with data
+/// metric's eigen-solver may still fail (`Surface_voronoi::Numerical_error`) on a mesh made
+/// mostly of needles thinner than about 1e-10 of their length (a 4-vertex rhombus of height
+/// 1e-11: its shift follows their cotangents); the other metrics do not. Callers with data
 /// outside the range scale it by a power of two (exact) first, as the `surface_voronoi`
 /// program does.
 ///
