@@ -130,3 +130,37 @@ TEST_CASE("embedding: the largest dimension a mesh allows, and the largest works
   CHECK(problems.front().kind == SV::Input_problem::ZERO_AREA_FACE);
   CHECK(problems.front().message.find("zero area") != std::string::npos);
 }
+
+#if defined(NDEBUG) || defined(CGAL_NO_PRECONDITIONS)
+TEST_CASE("embedding: a dimension above maximum_dimension() is a clear Input_error in release builds", "[embedding][numerics]")
+{
+  // A tetrahedron allows 2 (4 vertices, one zero eigenvalue); the precondition guards debug
+  // builds (test_preconditions.cpp), this error every other one.
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0));
+  const auto c = m.add_vertex(Point(0, 1, 0)), d = m.add_vertex(Point(0, 0, 1));
+  m.add_face(a, c, b);
+  m.add_face(a, b, d);
+  m.add_face(a, d, c);
+  m.add_face(b, c, d);
+  REQUIRE(CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m) == 2);
+  CHECK_THROWS_AS(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(10)), SV::Input_error);
+  CHECK_THROWS_WITH(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(3)), Catch::Contains("at most 2"));
+  CHECK(CGAL::Biharmonic_embedding<Mesh>(m, SV::parameters::embedding_dimension(2)).dimension() == 2);
+}
+#endif
+
+TEST_CASE("embedding: a cap of height 1e-12 in a unit square keeps its zero eigenvalue within rounding noise", "[embedding][numerics]")
+{
+  // Its cotangents (about 1e12) put the computed zero eigenvalue at about 4e-5 for a first
+  // non-zero one of 4: above 1e-6 of it, but within the rounding of L's row sums.
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0)), c = m.add_vertex(Point(1, 1, 0));
+  const auto d = m.add_vertex(Point(0, 1, 0)), e = m.add_vertex(Point(0.5, 1e-12, 0));
+  m.add_face(a, e, d);
+  m.add_face(e, b, c);
+  m.add_face(e, c, d);
+  m.add_face(a, b, e);
+  const CGAL::Biharmonic_embedding<Mesh> embedding(m, SV::parameters::embedding_dimension(2));
+  CHECK(embedding.dimension() == 2);
+}

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -1913,4 +1914,185 @@ TEST_CASE("program: sites file: a missing sites file is an error naming it", "[p
   CHECK(r.err.find("absent_sites.txt") != std::string::npos);
 }
 
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Numerical robustness and limits (issue 11): needles, extreme coordinates, the refinement
+// cap, site counts, the default biharmonic dimension on small meshes
+
+const char* const rhombus_off = "OFF\n4 2 0\n-0.5 0 0\n0.5 0 0\n0 1e-9 0\n0 -1e-9 0\n3 0 1 2\n3 1 0 3\n";
+
+std::string tetrahedron_off(const std::string& s)
+{
+  const std::string z = "0";
+  return "OFF\n4 4 0\n" + z + " 0 0\n" + s + " 0 0\n0 " + s + " 0\n0 0 " + s + "\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+}
+
+double seconds_since(const std::chrono::steady_clock::time_point& t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST_CASE("program: needles and caps (a 1 x 2e-9 rhombus) work with every metric", "[program][numerics]")
+{
+  // Before: SIGFPE for every metric (PMP's locate divided by a Gram determinant that
+  // cancels to 0, and NaN barycentric coordinates reached GMP).
+  Temp_dir dir;
+  write_bytes(dir / "rhombus.off", rhombus_off);
+  write_sites(dir / "sites.txt", { {{ -0.25, 2.5e-10, 0 }}, {{ 0.25, -2.5e-10, 0 }}, {{ 0.1, 0, 0 }}, {{ -0.4, -1e-10, 0 }} });
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
+  {
+    std::vector<std::string> extra;
+    if(metric == "geodesic") extra.push_back("--no-refine");
+    for(const bool from_file : { false, true })
+    {
+      std::vector<std::string> args = { (dir / "rhombus.off").string(), "--metric", metric, "--output",
+                                        (dir / "out.ply").string(), "--stats" };
+      if(from_file) { args.push_back("--sites"); args.push_back((dir / "sites.txt").string()); }
+      else { args.push_back("--random"); args.push_back("10"); }
+      args.insert(args.end(), extra.begin(), extra.end());
+      const Run r = run_program(dir, args);
+      check_success(r);
+      const auto stats = parse_stats(r.out);
+      CHECK(stats.at("cells") == (from_file ? "4" : "10"));
+      CHECK(stats.at("unreached_faces") == "0");
+      CHECK(std::abs(std::stod(stats.at("surface_area")) - 1e-9) < 1e-15);
+      const Arrangement_ply a = read_arrangement(dir / "out.ply");
+      for(const V3& v : a.vertices)
+        for(double c : v) CHECK(std::isfinite(c));
+    }
+  }
+  // the geodesic refinement cannot refine the needles down to the area-derived length: it
+  // stops at its cap and says to use --no-refine
+  const Run refined = run_program(dir, { (dir / "rhombus.off").string(), "--random", "10", "--metric", "geodesic" });
+  check_one_line_error(refined, 1);
+  CHECK(refined.err.find("--no-refine") != std::string::npos);
+}
+
+TEST_CASE("program: coordinates near 1e308 and 1e-310 work, the outputs in the input's units", "[program][numerics]")
+{
+  // Before: 1e308 recursed without end in random_sites (areas overflow), with a sites file
+  // SIGFPE; 1e-310 (areas underflow to 0) looped forever.
+  Temp_dir dir;
+  struct Case { std::string scale; double s; V3 site; };
+  for(const Case& c : { Case{ "1.5e308", 1.5e308, {{ 0.25e308, 0.25e308, 1.0e308 }} },
+                        Case{ "1e-310", 1e-310, {{ 0.3e-310, 0.3e-310, 0.4e-310 }} } })
+    for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
+      for(const bool from_file : { false, true })
+      {
+        INFO("scale " << c.scale << ", metric " << metric << (from_file ? ", sites file" : ", --random"));
+        write_bytes(dir / "tet.off", tetrahedron_off(c.scale));
+        write_sites(dir / "sites.txt", { c.site, {{ 0, 0.5 * c.s, 0.2 * c.s }}, {{ 0.3 * c.s, 0.3 * c.s, 0 }} });
+        std::vector<std::string> args = { (dir / "tet.off").string(), "--metric", metric, "--output",
+                                          (dir / "out.ply").string(), "--sites-out", (dir / "out.xyz").string(),
+                                          "--dual", (dir / "dual.off").string() };
+        if(from_file) { args.push_back("--sites"); args.push_back((dir / "sites.txt").string()); }
+        else { args.push_back("--random"); args.push_back("6"); }
+        const auto t0 = std::chrono::steady_clock::now();
+        const Run r = run_program(dir, args);
+        CHECK(seconds_since(t0) < 10);
+        check_success(r);
+        // every output is back in the input's units: on the tetrahedron of side c.s
+        const Arrangement_ply a = read_arrangement(dir / "out.ply");
+        double largest = 0;
+        for(const V3& v : a.vertices)
+          for(double x : v) { REQUIRE(std::isfinite(x)); CHECK(x >= -1e-6 * c.s); largest = (std::max)(largest, x); }
+        CHECK(largest == c.s);
+        for(const V3& p : read_sites_out(dir / "out.xyz"))
+        {
+          CHECK(p[0] + p[1] + p[2] <= c.s * (1 + 1e-9));
+          CHECK((std::min)((std::min)(p[0], p[1]), p[2]) >= 0);
+          CHECK((std::max)((std::max)(p[0], p[1]), p[2]) > 1e-3 * c.s);
+        }
+      }
+  // ordinary meshes are not scaled (the regression matrix checks them bit for bit)
+}
+
+TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 naming --no-refine", "[program][numerics]")
+{
+  // Before: a 1 x 1e-6 strip of two needles refined past 500,000 vertices for 2 sites and
+  // kept going (over 2 GB) for 10 sites.
+  Temp_dir dir;
+  write_bytes(dir / "strip.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1e-6 0\n0 1e-6 0\n3 0 1 2\n3 0 2 3\n");
+  for(const std::string n : { "2", "10", "200" })
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Run r = run_program(dir, { (dir / "strip.off").string(), "--random", n, "--metric", "geodesic" });
+    CHECK(seconds_since(t0) < 10);
+    check_one_line_error(r, 1);
+    CHECK(r.err.find("cap") != std::string::npos);
+    CHECK(r.err.find("--no-refine") != std::string::npos);
+    CHECK(r.err.find("fewer sites") != std::string::npos);
+  }
+  check_success(run_program(dir, { (dir / "strip.off").string(), "--random", "10", "--metric", "geodesic", "--no-refine" }));
+}
+
+TEST_CASE("program: site counts are limited (10,000,000 in all; 256 per face, 2048 with --insert-sites)", "[program][numerics]")
+{
+  // Before: --random 100000000 on a tetrahedron ran for minutes without a message, and
+  // --random 10000 took 12 s (every site a candidate of every face).
+  Temp_dir dir;
+  write_bytes(dir / "tet.off", tetrahedron_off("1"));
+  const std::string mesh = (dir / "tet.off").string();
+  for(const std::string flag : { "--random", "--blue-noise" })
+  {
+    const Run over = run_program(dir, { mesh, flag, "10000001" });
+    check_one_line_error(over, 2);
+    CHECK(over.err.find("10000000") != std::string::npos);
+    for(const std::string n : { "10000000", "1000000" })
+      for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
+      {
+        const auto t0 = std::chrono::steady_clock::now();
+        const Run r = run_program(dir, { mesh, flag, n, "--metric", metric });
+        CHECK(seconds_since(t0) < 2);
+        check_one_line_error(r, 2);
+        CHECK(r.err.find("256 sites per face") != std::string::npos);
+        CHECK(r.err.find("--insert-sites") != std::string::npos);
+        const Run inserted = run_program(dir, { mesh, flag, n, "--metric", metric, "--insert-sites" });
+        check_one_line_error(inserted, 2);
+        CHECK(inserted.err.find("2048 sites per face") != std::string::npos);
+      }
+  }
+  // the count per face after the draw: 1000 random sites put more than 256 on the largest face
+  const Run drawn = run_program(dir, { mesh, "--random", "1000", "--metric", "euclidean" });
+  check_one_line_error(drawn, 2);
+  CHECK(drawn.err.find("holds more than 256 sites") != std::string::npos);
+  // a sites file with 300 sites in one face: bad input
+  std::vector<V3> many;
+  for(int i = 0; i < 300; ++i) many.push_back({{ 0.001 + 0.003 * (i % 20), 0.001 + 0.003 * (i / 20), 0 }});
+  write_sites(dir / "many.txt", many);
+  const Run file = run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean" });
+  check_one_line_error(file, 1);
+  CHECK(file.err.find("holds more than 256 sites") != std::string::npos);
+  check_success(run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean", "--insert-sites" }));
+  // within the limits the largest runs finish quickly
+  const auto t0 = std::chrono::steady_clock::now();
+  check_success(run_program(dir, { mesh, "--random", "650", "--metric", "euclidean" }));
+  CHECK(seconds_since(t0) < 5);
+}
+
+TEST_CASE("program: the default biharmonic dimension is lowered on small meshes, with a note", "[program][numerics]")
+{
+  // Before: every mesh of up to 11 vertices (CGAL's tetrahedron, cube, octahedron) was
+  // refused with the default dimension 10.
+  Temp_dir dir;
+  write_bytes(dir / "tet.off", tetrahedron_off("1"));
+  const std::string mesh = (dir / "tet.off").string();
+  const Run r = run_program(dir, { mesh, "--random", "5", "--output", (dir / "out.ply").string() });
+  check_success(r);
+  CHECK(count_lines(r.err) == 1);
+  CHECK(r.err.rfind("surface_voronoi: note: ", 0) == 0);
+  CHECK(r.err.find("at most 2") != std::string::npos);
+  // the same diagram as an explicit --dimension 2
+  const Run two = run_program(dir, { mesh, "--random", "5", "--dimension", "2", "--output", (dir / "two.ply").string() });
+  check_success(two);
+  CHECK(two.err.empty());
+  CHECK(same_files(dir / "out.ply", dir / "two.ply"));
+  // an explicit dimension too large stays an error that names the maximum
+  const Run explicit_too_large = run_program(dir, { mesh, "--random", "5", "--dimension", "3" });
+  check_one_line_error(explicit_too_large, 1);
+  CHECK(explicit_too_large.err.find("at most 2") != std::string::npos);
+}
+
+} // namespace
 } // namespace svd_program_test

@@ -100,3 +100,20 @@ TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinem
   CHECK(after.mislabeled_share <= 0.03);
   CHECK(after.through_wall_upper == 0);
 }
+
+TEST_CASE("refinement: a thin strip reaches a small vertex cap quickly and gives no sites", "[refinement][numerics]")
+{
+  // a 1 x 1e-6 strip of two needles: splitting down to the area-derived length never ends
+  // in practice (over 500,000 vertices for 2 sites); the cap stops it
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0));
+  const auto c = m.add_vertex(Point(1, 1e-6, 0)), d = m.add_vertex(Point(0, 1e-6, 0));
+  m.add_face(a, b, c);
+  m.add_face(a, c, d);
+  const auto sites = area_uniform_locations(m, 2, 1);
+  Mesh refined;
+  const auto r = SV::refine_for_sites(m, sites, refined, SV::parameters::refinement_max_vertices(1536));
+  CHECK(r.vertex_limit_reached);
+  CHECK(r.sites.empty());
+  CHECK(num_vertices(refined) <= 1536);
+}

@@ -50,3 +50,55 @@ TEST_CASE("sampling: blue noise is deterministic, has N sites, and keeps them ap
   for(std::size_t i = 0; i < vd.number_of_sites(); ++i) { lo = (std::min)(lo, vd.cell_area(i)); hi = (std::max)(hi, vd.cell_area(i)); }
   CHECK(hi / lo < 4);
 }
+
+namespace {
+// a tetrahedron with its corners at `s` times the unit corners (0, e_x, e_y, e_z)
+Mesh scaled_tetrahedron(double s)
+{
+  Mesh m;
+  const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(s, 0, 0));
+  const auto c = m.add_vertex(Point(0, s, 0)), d = m.add_vertex(Point(0, 0, s));
+  m.add_face(a, c, b);
+  m.add_face(a, b, d);
+  m.add_face(a, d, c);
+  m.add_face(b, c, d);
+  return m;
+}
+} // namespace
+
+TEST_CASE("sampling: areas that overflow or underflow (coordinates near 1e308, 1e-310) still sample, and in bounded time",
+          "[sampling][numerics]")
+{
+  // Before: an infinite total area made Boost's uniform_real recurse until the stack
+  // overflowed, a zero total area made it loop forever.
+  for(double s : { 1.5e308, 1e-310, 0x1p-1074 * 8 })
+  {
+    INFO("scale " << s);
+    const Mesh m = scaled_tetrahedron(s);
+    const auto r = SV::random_sites(m, 1000, CGAL::parameters::random_seed(3));
+    REQUIRE(r.size() == 1000);
+    std::map<Mesh::Face_index, std::size_t> per_face;
+    for(const auto& l : r)
+    {
+      ++per_face[l.first];
+      for(double b : l.second) CHECK((b >= 0 && b <= 1));
+    }
+    // on the scaled points the areas are those of the unit tetrahedron: every face is drawn
+    if(s > 1e-320)
+    {
+      CHECK(per_face.size() == 4);
+      // the slanted face has sqrt(3) times the area of the others
+      const std::size_t slanted = per_face[Mesh::Face_index(3)];
+      CHECK(slanted > 250);
+      CHECK(slanted < 480);
+    }
+    const auto b = SV::blue_noise_sites(m, 50, CGAL::parameters::random_seed(3));
+    CHECK(b.size() == 50);
+  }
+  // the same distribution as on the unit tetrahedron, at a power-of-two scale
+  const auto unit = SV::random_sites(scaled_tetrahedron(1), 200, CGAL::parameters::random_seed(9));
+  const auto big = SV::random_sites(scaled_tetrahedron(0x1p1000), 200, CGAL::parameters::random_seed(9));
+  std::size_t same_faces = 0;
+  for(std::size_t i = 0; i < unit.size(); ++i) same_faces += (unit[i].first == big[i].first);
+  CHECK(same_faces == unit.size());
+}

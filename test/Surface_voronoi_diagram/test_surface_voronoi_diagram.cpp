@@ -5,6 +5,7 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/validate_input.h>
 #include <test_meshes.h>
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
@@ -317,4 +318,80 @@ TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
   REQUIRE(problems.size() == 1);
   CHECK(problems[0].kind == SV::Input_problem::NON_MANIFOLD_VERTEX);
   CHECK(problems[0].message.find("vertex 0 is non-manifold") != std::string::npos);
+}
+
+TEST_CASE("diagram: needles and caps (a 1 x 2e-9 rhombus) give finite locations and a diagram", "[diagram][numerics]")
+{
+  // Two valid triangles whose Gram determinant cancels to exactly 0: PMP's barycentric
+  // coordinates are NaN on them (the program died of SIGFPE when they reached GMP).
+  Mesh m;
+  const auto a = m.add_vertex(Point(-0.5, 0, 0)), b = m.add_vertex(Point(0.5, 0, 0));
+  const auto c = m.add_vertex(Point(0, 1e-9, 0)), d = m.add_vertex(Point(0, -1e-9, 0));
+  m.add_face(a, b, c);
+  m.add_face(b, a, d);
+  namespace SVi = SV::internal;
+  const SVi::Point_d p0(-0.5, 0, 0), p1(0.5, 0, 0), p2(0, 1e-9, 0);
+  CHECK(SVi::is_needle(p0, p1, p2));
+  const SVi::Point_d x(0.25, 2e-10, 0);
+  const SVi::Barycentric bc = SVi::barycentric_coordinates(p0, p1, p2, x);
+  for(double v : bc) REQUIRE(std::isfinite(v));
+  CHECK(std::abs(bc[0] + bc[1] + bc[2] - 1) < 1e-12);
+  // the point itself, to a small fraction of the triangle's height
+  CHECK(std::sqrt(CGAL::squared_distance(SVi::point_at(p0, p1, p2, bc), x)) <= 1e-12);
+  // a point on the long edge (of a cap whose other edges meet above it) gets an exact 0
+  CHECK(SVi::barycentric_coordinates(p0, p1, p2, SVi::Point_d(-0.4, 0, 0))[2] == 0);
+  // a well-shaped triangle keeps PMP's coordinates bit for bit
+  const SVi::Point_d q0(0, 0, 0), q1(1, 0, 0), q2(0.3, 0.8, 0.1), y(0.4, 0.3, 0.05);
+  CHECK(!SVi::is_needle(q0, q1, q2));
+  CHECK(SVi::barycentric_coordinates(q0, q1, q2, y)
+        == CGAL::Polygon_mesh_processing::barycentric_coordinates(q0, q1, q2, y, SVi::Double_kernel()));
+  // coincident corners: no NaN either
+  for(double v : SVi::barycentric_coordinates(q0, q0, q0, y)) CHECK(std::isfinite(v));
+
+  // the rhombus is valid input: its faces are far above the degenerate threshold
+  std::vector<Location<Mesh> > sites;
+  sites.push_back(Location<Mesh>(*faces(m).begin(), {{ 0.2, 0.3, 0.5 }}));
+  sites.push_back(Location<Mesh>(*std::next(faces(m).begin()), {{ 0.6, 0.1, 0.3 }}));
+  sites.push_back(Location<Mesh>(*faces(m).begin(), {{ 0.7, 0.2, 0.1 }}));
+  CHECK(SV::validate_input(m, sites).empty());
+  Euclidean metric(m);
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, metric, sites);
+  CHECK(vd.statistics().cells == 3);
+  CHECK(vd.statistics().unreached_faces == 0);
+  CHECK(std::abs(vd.statistics().surface_area - 1e-9) < 1e-18);
+  Biharmonic biharmonic(m, SV::parameters::embedding_dimension(2));
+  const CGAL::Surface_voronoi_diagram<Mesh, Biharmonic> bd(m, biharmonic, sites);
+  CHECK(bd.statistics().cells == 3);
+}
+
+TEST_CASE("diagram: validate_input names degenerate needles and coordinates out of range", "[diagram][numerics]")
+{
+  auto two_faces = [](double height, double scale) {
+    Mesh m;
+    const auto a = m.add_vertex(Point(-0.5 * scale, 0, 0)), b = m.add_vertex(Point(0.5 * scale, 0, 0));
+    const auto c = m.add_vertex(Point(0, height * scale, 0)), d = m.add_vertex(Point(0, -0.5 * scale, 0));
+    m.add_face(a, b, c);
+    m.add_face(b, a, d);
+    return m;
+  };
+  const std::vector<Mesh::Vertex_index> site = { Mesh::Vertex_index(3) };
+  // height 1e-9 of the unit edge: accepted; 1e-14 (area 5e-15 < 2^-44): degenerate
+  CHECK(SV::validate_input(two_faces(1e-9, 1), site).empty());
+  const auto needle = SV::validate_input(two_faces(1e-14, 1), site);
+  REQUIRE(needle.size() == 1);
+  CHECK(needle[0].kind == SV::Input_problem::ZERO_AREA_FACE);
+  CHECK(needle[0].element == 0);
+  CHECK(needle[0].message.find("degenerate") != std::string::npos);
+  // the same shapes scaled by 2^300: coordinates out of range; by 2^-300: faces too small
+  const auto big = SV::validate_input(two_faces(0.5, 0x1p300), site);
+  REQUIRE(!big.empty());
+  CHECK(big[0].kind == SV::Input_problem::COORDINATE_OUT_OF_RANGE);
+  CHECK(big[0].message.find("2^200") != std::string::npos);
+  const auto small = SV::validate_input(two_faces(0.5, 0x1p-300), site);
+  REQUIRE(!small.empty());
+  CHECK(small[0].kind == SV::Input_problem::ZERO_AREA_FACE);
+  CHECK(small[0].message.find("too small") != std::string::npos);
+  // the ends of the range are accepted
+  CHECK(SV::validate_input(two_faces(0.5, 0x1p199), site).empty());
+  CHECK(SV::validate_input(two_faces(0.5, 0x1p-199), site).empty());
 }

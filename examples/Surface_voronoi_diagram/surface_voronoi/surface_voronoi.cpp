@@ -64,6 +64,28 @@ namespace SV = CGAL::Surface_voronoi;
 namespace svd_program {
 namespace {
 
+// The program's limits (the manual's troubleshooting section lists them).
+// The most sites --random, --blue-noise or a sites file may give.
+const long long max_sites = 10000000;
+// The most sites one input face may hold. Without --insert-sites, a face is cut among its
+// candidate sites at a cost that grows faster than their square (measured on a cube: 256 per
+// face take 0.3 s with the Euclidean metric and 1.6 s with the geodesic one; 2,500 per face
+// on a tetrahedron take 12 s). With --insert-sites every site becomes a vertex, but each is
+// inserted by a scan of its face's pieces (2,500 per face: 0.5 s; 25,000: over 30 s; 11,000
+// sites on a tetrahedron take 9 s with the geodesic metric).
+const std::size_t max_sites_per_face = 256;
+const std::size_t max_inserted_sites_per_face = 2048;
+// The geodesic refinement's cap: at most this many vertices per input vertex and site (the
+// regression models need up to 64), and never more than the ceiling (measured on a thin
+// strip of needles: 307,712 vertices reached in 1.2 s, 4,000,000 in 15 s on a loaded 2-core
+// machine: 1,000,000 is reached in about 4 s).
+const std::size_t refinement_vertices_per_element = 256;
+const std::size_t refinement_max_vertices = 1000000;
+// Meshes whose largest coordinate is beyond 2^100, or whose bounding box is smaller than
+// 2^-100, are scaled by a power of two (exact) into [0.5, 1) and their outputs scaled back:
+// the library's range (validate_input) is far wider, ordinary meshes are never scaled.
+const int normalize_above_exponent = 100;
+
 struct Failure
 {
   int code;
@@ -81,6 +103,7 @@ struct Arguments
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
   double max_site_distance = 0.01;
+  int scale = 0;   // the mesh is computed on scaled by 2^-scale (normalization_exponent())
 };
 
 const char* usage =
@@ -119,8 +142,8 @@ Arguments parse(int argc, char** argv)
     };
     if(arg == "--help" || arg == "-h") { std::cout << usage << std::endl; std::exit(0); }
     else if(arg == "--sites") a.sites = value();
-    else if(arg == "--random") a.random = parse_integer(arg, value(), 1, 100000000);
-    else if(arg == "--blue-noise") a.blue_noise = parse_integer(arg, value(), 1, 10000000);
+    else if(arg == "--random") a.random = parse_integer(arg, value(), 1, max_sites);
+    else if(arg == "--blue-noise") a.blue_noise = parse_integer(arg, value(), 1, max_sites);
     else if(arg == "--seed") { a.seed = static_cast<unsigned int>(parse_integer(arg, value(), 0, 4294967295LL)); a.seed_given = true; }
     else if(arg == "--metric") a.metric = value();
     else if(arg == "--no-refine") a.no_refine = true;
@@ -173,7 +196,14 @@ auto with_diagram_parameters(const Diagram_choices& choices, const NamedParamete
 // may move it by an ulp, possibly back and forth between two faces at an edge. Iterate
 // until the sequence repeats and take the lexicographically smallest point of the cycle:
 // written with 17 digits by --sites-out and read back, it gives the very same location,
-// so the diagram is reproduced bit for bit.
+// so the diagram is reproduced bit for bit. The library's locate is PMP's, safe on needles
+// and caps (PMP's divides by a Gram determinant that cancels to zero on them).
+template <class Tree>
+Location locate(const Point& p, const Tree& tree, const Mesh& mesh)
+{
+  return SV::internal::locate_with_AABB_tree(p, tree, mesh, get(CGAL::vertex_point, mesh), K());
+}
+
 template <class Tree>
 Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
 {
@@ -181,7 +211,7 @@ Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
   std::size_t cycle_start = 0;
   for(int k = 0; k < 16; ++k)
   {
-    const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(seen.back(), tree, mesh);
+    const Location l = locate(seen.back(), tree, mesh);
     const Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
     const auto it = std::find(seen.begin(), seen.end(), q);
     if(it != seen.end()) { cycle_start = std::size_t(it - seen.begin()); break; }
@@ -189,7 +219,42 @@ Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
     cycle_start = seen.size() - 1;
   }
   p = *std::min_element(seen.begin() + std::ptrdiff_t(cycle_start), seen.end());
-  return CGAL::Polygon_mesh_processing::locate_with_AABB_tree(p, tree, mesh);
+  return locate(p, tree, mesh);
+}
+
+// The power of two 2^e the mesh is scaled by (its points multiplied by 2^-e), 0 for a mesh
+// within [2^-100, 2^100]: squares of coordinates, areas and squared areas stay far from
+// overflow and underflow on the scaled mesh, and every output is scaled back exactly.
+int normalization_exponent(const Mesh& mesh)
+{
+  double largest = 0, lo[3], hi[3];
+  bool first = true;
+  for(auto v : vertices(mesh))
+  {
+    const Point& p = mesh.point(v);
+    for(int c = 0; c < 3; ++c)
+    {
+      if(!std::isfinite(p[c])) return 0;   // validate_input reports it
+      largest = (std::max)(largest, std::abs(p[c]));
+      lo[c] = first ? p[c] : (std::min)(lo[c], p[c]);
+      hi[c] = first ? p[c] : (std::max)(hi[c], p[c]);
+    }
+    first = false;
+  }
+  if(first || largest == 0) return 0;
+  // the extent, halved so that it cannot overflow
+  double extent = 0;
+  for(int c = 0; c < 3; ++c) extent = (std::max)(extent, hi[c] / 2 - lo[c] / 2);
+  if(largest <= std::ldexp(1., normalize_above_exponent) && !(extent < std::ldexp(1., -normalize_above_exponent - 1)))
+    return 0;
+  int e = 0;
+  std::frexp(largest, &e);   // largest = m 2^e, m in [0.5, 1)
+  return e;
+}
+
+Point scaled(const Point& p, int e)
+{
+  return e == 0 ? p : Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
 }
 
 template <class Diagram>
@@ -197,8 +262,9 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             double insertion, std::size_t faces, const SV::internal::Stage_times& times)
 {
   const SV::Diagram_statistics& s = vd.statistics();
+  const auto area = [&](double a) { return std::ldexp(a, 2 * args.scale); };   // in the input's units
   if(s.unreached_faces > 0)
-    std::cerr << "surface_voronoi: warning: " << s.unreached_faces << " faces (area " << s.unreached_area << ", "
+    std::cerr << "surface_voronoi: warning: " << s.unreached_faces << " faces (area " << area(s.unreached_area) << ", "
               << s.unreached_components << " component(s)) are reached by no site and are labelled -1" << std::endl;
   if(power && s.empty_cells > 0)
   {
@@ -219,8 +285,8 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "broken_cells: " << s.broken_cells << "\n"
             << "repair_rounds: " << s.repair_rounds << "\n"
             << "unreached_faces: " << s.unreached_faces << "\n"
-            << "unreached_area: " << s.unreached_area << "\n"
-            << "surface_area: " << s.surface_area << "\n"
+            << "unreached_area: " << area(s.unreached_area) << "\n"
+            << "surface_area: " << area(s.surface_area) << "\n"
             << "mean_candidates_per_face: " << s.mean_candidates_per_face << "\n"
             << "load: " << load << "\n"
             << "insertion: " << insertion << "\n"
@@ -247,7 +313,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
   const auto t0 = std::chrono::steady_clock::now();
   if(!args.output.empty())
   {
-    try { write_arrangement_PLY(args.output, vd, true); }
+    try { write_arrangement_PLY(args.output, vd, true, args.scale); }
     catch(const Write_error& e) { fail(4, e.what()); }
     catch(const SV::Error& e) { fail(4, e.what()); }   // the arrangement could not be built
   }
@@ -257,6 +323,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     std::vector<Point> points;
     std::vector<std::array<std::size_t, 3> > triangles;
     const bool manifold = SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
+    for(Point& p : points) p = scaled(p, args.scale);
     try
     {
       write_output_file(args.dual, false, [&](std::ostream& os) {
@@ -274,13 +341,17 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
 
 int run_main(int argc, char** argv)
 {
-  const Arguments args = parse(argc, argv);
+  Arguments args = parse(argc, argv);
   typedef std::chrono::steady_clock Clock;
   const auto t0 = Clock::now();
   Mesh mesh;
   Mesh_reading_report reading;
   try { reading = read_checked_triangle_mesh(args.mesh, mesh); }
   catch(const Input_error& e) { fail(1, e.what()); }
+  // a mesh too large or too small for doubles' squares is computed on at a power-of-two scale
+  args.scale = normalization_exponent(mesh);
+  if(args.scale != 0)
+    for(auto v : vertices(mesh)) mesh.point(v) = scaled(mesh.point(v), -args.scale);
 
   // breaklines: pairs of vertex indices of the file, each an edge of the mesh
   auto breakline = mesh.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
@@ -318,16 +389,23 @@ int run_main(int argc, char** argv)
   tree.accelerate_distance_queries();
   std::vector<Point> site_points;
   std::vector<double> weights;
+  const std::size_t per_face_limit = args.insert_sites ? max_inserted_sites_per_face : max_sites_per_face;
+  const std::string per_face_advice = args.insert_sites
+      ? " (the limit per input face with --insert-sites); use a finer mesh or fewer sites"
+      : " (the limit per input face without --insert-sites); use --insert-sites, a finer mesh or fewer sites";
   if(!args.sites.empty())
   {
     std::vector<Site_record> records;
     try { records = read_sites_file(args.sites); }
     catch(const Input_error& e) { fail(1, e.what()); }
     if(records.empty()) fail(1, args.sites + ": the sites file has no sites");
+    if(records.size() > std::size_t(max_sites))
+      fail(1, args.sites + ": the sites file has " + std::to_string(records.size()) + " sites, more than the limit of "
+              + std::to_string(max_sites));
     const double limit = args.max_site_distance * diagonal;
     for(const Site_record& r : records)
     {
-      const Point p(r.x, r.y, r.z);
+      const Point p = scaled(Point(r.x, r.y, r.z), -args.scale);
       Point q = p;
       const Location l = canonical_location(q, tree, mesh);
       const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
@@ -335,18 +413,24 @@ int run_main(int argc, char** argv)
       {
         std::ostringstream os;
         os.precision(6);
-        os << "sites file line " << r.line << ": the site is " << d << " from the surface, more than "
-           << args.max_site_distance << " x the bounding-box diagonal (" << limit << ")";
+        os << "sites file line " << r.line << ": the site is " << std::ldexp(d, args.scale) << " from the surface, more than "
+           << args.max_site_distance << " x the bounding-box diagonal (" << std::ldexp(limit, args.scale) << ")";
         fail(1, os.str());
       }
       locations.push_back(l);
       site_points.push_back(q);
       lines.push_back(r.line);
-      weights.push_back(r.has_weight ? r.weight : 0.);
+      weights.push_back(r.has_weight ? r.weight : 0.);   // in the input's units (squared lengths)
     }
   }
   else
   {
+    // a face cannot hold more than max_sites_per_face sites: fail before drawing them
+    const long long count = args.random >= 0 ? args.random : args.blue_noise;
+    if(std::size_t(count) > per_face_limit * num_faces(mesh))
+      fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count) + ": more than "
+              + std::to_string(per_face_limit) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
+              + per_face_advice);
     const std::vector<Location> drawn = args.random >= 0
       ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), CGAL::parameters::random_seed(args.seed))
       : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), CGAL::parameters::random_seed(args.seed));
@@ -355,6 +439,18 @@ int run_main(int argc, char** argv)
       Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
       locations.push_back(canonical_location(q, tree, mesh));
       site_points.push_back(q);
+    }
+  }
+  {
+    std::map<Mesh::Face_index, std::size_t> per_face;
+    for(const Location& l : locations)
+    {
+      const std::size_t k = ++per_face[l.first];
+      if(k <= per_face_limit) continue;
+      const std::string what = "face " + std::to_string(std::size_t(l.first)) + " holds more than "
+                               + std::to_string(per_face_limit) + " sites" + per_face_advice;
+      if(!lines.empty()) fail(1, args.sites + ": " + what);
+      fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(locations.size()) + ": " + what);
     }
   }
   const double load = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -367,22 +463,34 @@ int run_main(int argc, char** argv)
               + ": the two sites are at the same surface point");
     fail(1, args.mesh + ": " + p.message);
   }
-  // the biharmonic embedding needs more vertices than eigenpairs (on the mesh it is built on)
-  auto check_dimension = [&](const Mesh& m) {
+  // The biharmonic embedding needs more vertices than eigenpairs (on the mesh it is built
+  // on): without --dimension, the default is lowered to what the mesh allows, with a note.
+  auto dimension_for = [&](const Mesh& m) {
+    if(args.metric != "biharmonic") return args.dimension;
     const std::size_t largest = CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
-    if(args.metric == "biharmonic" && args.dimension > largest)
-    {
-      const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
-      fail(1, args.mesh + ": the mesh has " + std::to_string(nv) + " vertices and " + std::to_string(components)
-              + " component(s): too few for an embedding of dimension " + std::to_string(args.dimension));
-    }
+    if(args.dimension <= largest) return args.dimension;
+    const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
+    const std::string what = "the mesh has " + std::to_string(nv) + " vertices and " + std::to_string(components)
+                             + " component(s): an embedding of dimension at most " + std::to_string(largest);
+    if(args.dimension_given || largest == 0)
+      fail(1, args.mesh + ": " + what + (largest == 0 ? " (none is possible)" : "")
+              + ", too few for dimension " + std::to_string(args.dimension));
+    static std::size_t noted = 0;
+    if(noted != largest)
+      std::cerr << "surface_voronoi: note: " << what << " (the default is " << args.dimension << "): using "
+                << largest << std::endl;
+    noted = largest;
+    return largest;
   };
-  check_dimension(mesh);
+  if(!args.insert_sites) dimension_for(mesh);
 
   Diagram_choices choices;
   if(args.metric == "rvd") choices.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
   if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
-    choices.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w
+  {
+    choices.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w, a squared length
+    for(double& w : choices.weights) w = std::ldexp(w, -2 * args.scale);
+  }
   // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
   // with --insert-sites the relaxed sites are inserted afterwards
   std::vector<double> lloyd_energies;
@@ -397,7 +505,7 @@ int run_main(int argc, char** argv)
       SV::Lloyd_result<Mesh> r;
       if(args.metric == "biharmonic")
       {
-        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(args.dimension));
+        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension_for(mesh)));
         r = relax(metric);
       }
       else if(args.metric == "geodesic")
@@ -449,11 +557,15 @@ int run_main(int argc, char** argv)
       {
         // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
         const auto ti = Clock::now();
-        const std::size_t max_vertices = 20000000;
+        const std::size_t max_vertices = (std::min)(refinement_max_vertices,
+            refinement_vertices_per_element * (num_vertices(mesh) + locations.size()));
         const SV::Refined_sites<Mesh> r = SV::refine_for_sites(mesh, locations, refined,
             SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(refined_input_face));
         if(r.vertex_limit_reached)
-          fail(1, args.mesh + ": refine_for_sites: the refined mesh would exceed " + std::to_string(max_vertices) + " vertices");
+          fail(1, args.mesh + ": the refinement for the sites reached its cap of " + std::to_string(max_vertices)
+                  + " vertices (" + std::to_string(refinement_vertices_per_element) + " per input vertex and site, at most "
+                  + std::to_string(refinement_max_vertices) + "; thin faces need many): use --no-refine, "
+                    "--insert-sites or fewer sites");
         if(r.edges_split > 0)
         {
           work = &refined;
@@ -486,11 +598,11 @@ int run_main(int argc, char** argv)
         carry_breaklines(inserted.mesh, inserted.input_face);
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
-      check_dimension(*work);
+      const std::size_t dimension = dimension_for(*work);
       const auto te = Clock::now();
       if(args.metric == "biharmonic")
       {
-        CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(args.dimension));
+        CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(dimension));
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
         run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points);
       }
@@ -511,14 +623,18 @@ int run_main(int argc, char** argv)
 
   if(args.stats)
     for(std::size_t k = 0; k < lloyd_energies.size(); ++k)
-      std::cout << "lloyd_energy_" << k << ": " << lloyd_energies[k] << "\n";
+      std::cout << "lloyd_energy_" << k << ": " << std::ldexp(lloyd_energies[k], 4 * args.scale) << "\n";   // area x squared length
   if(!args.sites_out.empty())
   {
-    // the weights go with the sites, so that a power diagram reads back as the same diagram
+    // the weights go with the sites, so that a power diagram reads back as the same diagram;
+    // both in the units of the input (the normalization undone exactly)
+    for(Point& p : site_points) p = scaled(p, args.scale);
+    std::vector<double> weights_out = choices.weights;
+    for(double& w : weights_out) w = std::ldexp(w, 2 * args.scale);
     try
     {
       write_output_file(args.sites_out, false, [&](std::ostream& os) {
-        try { write_sites_file(os, site_points, choices.weights); }
+        try { write_sites_file(os, site_points, weights_out); }
         catch(const Input_error&) { if(os) throw; }   // a failed stream: the system says why
         return static_cast<bool>(os);
       });

@@ -21,6 +21,7 @@
 
 #include "output_file.h"
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -43,12 +44,20 @@ CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> arrangement_for_PLY(
 }
 
 /// Writes the arrangement to `filename` (binary little-endian PLY, or ASCII with 17 digits),
+/// its points multiplied by 2^`scale_exponent` (the program's normalization, undone exactly),
 /// with `write_output_file()`: a failed write leaves no partial file.
 /// \throws Write_error if the file cannot be written
 template <class Diagram>
-void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, bool binary = true)
+void write_arrangement_PLY(const std::string& filename, const Diagram& diagram, bool binary = true, int scale_exponent = 0)
 {
-  const auto mesh = arrangement_for_PLY(diagram);
+  auto mesh = arrangement_for_PLY(diagram);
+  if(scale_exponent != 0)
+    for(auto v : mesh.vertices())
+    {
+      const auto& p = mesh.point(v);
+      mesh.point(v) = typename decltype(mesh)::Point(std::ldexp(p.x(), scale_exponent), std::ldexp(p.y(), scale_exponent),
+                                                     std::ldexp(p.z(), scale_exponent));
+    }
   write_output_file(filename, binary, [&](std::ostream& os) {
     if(binary)
       CGAL::IO::set_binary_mode(os);

@@ -33,14 +33,18 @@ struct Input_problem
     EMPTY_MESH,           ///< the mesh has no face
     NOT_A_TRIANGLE,       ///< face `element` is not a triangle
     NON_FINITE_POINT,     ///< vertex `element` has a coordinate that is not a finite number
-    ZERO_AREA_FACE,       ///< face `element` has no area
+    ZERO_AREA_FACE,       ///< face `element` has no area, or too little to compute with: below 2^-44 (5.7e-14)
+                          ///< times its squared longest edge (a needle or a cap whose height is below about
+                          ///< 1.1e-13 of its longest edge), or a longest edge shorter than 2^-200 (6.2e-61)
     ISOLATED_VERTEX,      ///< vertex `element` belongs to no face
     NON_MANIFOLD_VERTEX,  ///< the faces around vertex `element` form several fans
     NO_SITES,             ///< the site range is empty
     SITE_NOT_ON_MESH,     ///< site `element` is not a vertex or a face location of the mesh, or not a finite point
     SITE_TOO_FAR,         ///< site `element`, a point, is farther from the surface than `max_site_distance`
     NON_FINITE_WEIGHT,    ///< the power weight of site `element` is not a finite number
-    COINCIDENT_SITES      ///< sites `element` and `other` are at the same surface point
+    COINCIDENT_SITES,     ///< sites `element` and `other` are at the same surface point
+    COORDINATE_OUT_OF_RANGE ///< vertex `element` has a coordinate beyond 2^200 (1.6e60) in magnitude, outside the
+                            ///< documented coordinate range (squared areas would overflow): scale the mesh
   };
   /// what is wrong
   Kind kind;

@@ -74,7 +74,21 @@ namespace CGAL {
 /// diagram is used; it does not use the metric after its construction. It can be moved,
 /// not copied.
 ///
-/// <b>Errors.</b> Invalid input (a mesh that is not a valid triangle mesh, faces of zero area,
+/// <b>Numerical range.</b> Coordinates up to \f$ 2^{200} \f$ (about 1.6e60) in magnitude and
+/// faces whose longest edge is at least \f$ 2^{-200} \f$ (about 6.2e-61), so that squared
+/// areas neither overflow nor underflow; a face is degenerate below an area of
+/// \f$ 2^{-44} \f$ (about 5.7e-14) times its squared longest edge. Thinner needles and caps
+/// are valid: barycentric coordinates on a face whose Gram determinant is below
+/// \f$ 2^{-40} \f$ of its scale (where PMP's formula divides by noise or zero) are computed
+/// from cross products instead. The biharmonic
+/// metric's eigen-solver may still fail (`Surface_voronoi::Numerical_error`) on a mesh made
+/// mostly of needles thinner than about 1e-10 of their length (a 4-vertex rhombus of height
+/// 1e-11: its shift follows their cotangents); the other metrics do not. Callers with data
+/// outside the range scale it by a power of two (exact) first, as the `surface_voronoi`
+/// program does.
+///
+/// <b>Errors.</b> Invalid input (a mesh that is not a valid triangle mesh, faces of zero area
+/// or degenerate, coordinates out of range,
 /// non-manifold vertices, no sites, coincident sites, non-finite weights) violates a
 /// precondition of the constructor: checked by `CGAL_precondition` in debug builds only.
 /// `Surface_voronoi::validate_input()` checks all of these in every build and names what is
@@ -217,8 +231,11 @@ public:
   /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not
   /// used after the constructor returns.
   ///
-  /// \pre `tm` is a valid triangle mesh whose faces have positive area and whose vertices are
-  ///      manifold; the sites are not empty; with `Coincident_sites::REJECT`, no two sites are
+  /// \pre `tm` is a valid triangle mesh whose vertices are manifold, within the documented
+  ///      coordinate range (no coordinate beyond \f$ 2^{200} \f$ in magnitude, no face whose
+  ///      longest edge is below \f$ 2^{-200} \f$), and whose faces are not degenerate (each
+  ///      has an area of at least \f$ 2^{-44} \f$ times its squared longest edge: needles and
+  ///      caps above that are computed with); the sites are not empty; with `Coincident_sites::REJECT`, no two sites are
   ///      at the same surface point; the weights are finite. `Surface_voronoi::validate_input()`
   ///      checks all of these and names what is wrong.
   /// \throws Surface_voronoi::Input_error if a site is not on `tm` (a descriptor of another
@@ -528,10 +545,10 @@ private:
     if(!builder.run()) cancel();
   }
 
+  // metrics without is_cancelled() are never cancelled (chosen by int/long, not by "...":
+  // clang refuses to pass a class object through "..." in builds with preconditions)
   template <class M>
   static auto is_cancelled_metric(const M& m, int) -> decltype(bool(m.is_cancelled())) { return m.is_cancelled(); }
-  // (not a C variadic: a metric is not trivially copyable, and passing it through "..." is
-  // only conditionally supported; Clang refuses it)
   template <class M>
   static bool is_cancelled_metric(const M&, long) { return false; }
 

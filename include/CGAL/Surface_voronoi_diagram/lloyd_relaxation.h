@@ -183,7 +183,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
-      const Location l = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(centroids[i], tree, tm, locate_np);
+      const Location l = internal::locate_with_AABB_tree(centroids[i], tree, tm, vpm,
+                                                         choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
       moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));
       sites[i] = l;
     }

@@ -99,7 +99,8 @@ struct Refined_sites
   double target_edge_length = 0;
   /// the number of edges split (0: the mesh was copied unchanged)
   std::size_t edges_split = 0;
-  /// whether the refinement stopped at `refinement_max_vertices` before reaching its target
+  /// whether the refinement stopped at `refinement_max_vertices` before reaching its target;
+  /// `sites` is then empty (and the refined mesh incomplete)
   bool vertex_limit_reached = false;
 };
 
@@ -161,7 +162,7 @@ struct Refined_sites
 /// \cgalNamedParamsEnd
 ///
 /// \returns the sites located on `out`, the target edge length, the number of edges split,
-///          and whether the vertex limit stopped the refinement
+///          and whether the vertex limit stopped the refinement (then without the sites)
 /// \pre `tm` is a triangle mesh, `sites` is not empty, `out` is empty
 template <class TriangleMesh, class LocationRange, class PolygonMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
@@ -284,6 +285,10 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
     auto user_map = choose_parameter(get_parameter(np_out, internal_np::input_face_map), CGAL::Constant_property_map<F, Input_face>());
     for(F f : faces(out)) put(user_map, f, get(input_face, f));
   }
+
+  // the caller must know the refinement is incomplete: locating the sites among the pieces
+  // of their faces would only cost time (up to the number of pieces per site)
+  if(r.vertex_limit_reached) return r;
 
   // the sites: each lies in one of the pieces of its input face
   std::vector<std::vector<F> > pieces(f2f.size());

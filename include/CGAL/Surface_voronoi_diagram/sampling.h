@@ -38,6 +38,62 @@
 
 namespace CGAL {
 namespace Surface_voronoi {
+namespace internal {
+
+// The binary exponent e of the largest finite coordinate of the vertices of `tm` (0 if
+// none): the points scaled by 2^-e have coordinates below 1, so that neither the squares of
+// their edges overflow nor, within the documented range, their areas underflow.
+template <class TriangleMesh, class VertexPointMap>
+int coordinate_exponent(const TriangleMesh& tm, const VertexPointMap& vpm)
+{
+  double largest = 0;
+  for(auto v : vertices(tm))
+  {
+    const Point_d p = to_point_d(get(vpm, v));
+    for(int c = 0; c < 3; ++c)
+      if(std::isfinite(p[c])) largest = (std::max)(largest, std::abs(p[c]));
+  }
+  int e = 0;
+  if(largest > 0) std::frexp(largest, &e);
+  return e;
+}
+
+inline Point_d scaled_point(const Point_d& p, int e)
+{
+  return Point_d(std::ldexp(p[0], e), std::ldexp(p[1], e), std::ldexp(p[2], e));
+}
+
+// the area of face f on the points scaled by 2^e
+template <class TriangleMesh, class VertexPointMap, class Face>
+double scaled_face_area(const TriangleMesh& tm, const VertexPointMap& vpm, Face f, int e)
+{
+  const auto h = halfedge(f, tm);
+  return triangle_area(scaled_point(to_point_d(get(vpm, source(h, tm))), e), scaled_point(to_point_d(get(vpm, target(h, tm))), e),
+                       scaled_point(to_point_d(get(vpm, target(next(h, tm), tm))), e));
+}
+
+// The cumulative areas of the faces `fs` measured on the points scaled by
+// 2^-coordinate_exponent(), faces without a positive finite area counting 0; if no face has
+// one, every face counts 1. Returns the total, always positive and finite.
+template <class TriangleMesh, class VertexPointMap, class Face>
+double scaled_cumulative_areas(const TriangleMesh& tm, const VertexPointMap& vpm, const std::vector<Face>& fs,
+                               std::vector<double>& cumulative)
+{
+  const int e = coordinate_exponent(tm, vpm);
+  cumulative.clear();
+  double total = 0;
+  for(auto f : fs)
+  {
+    const double a = scaled_face_area(tm, vpm, f, -e);
+    total += (a > 0 && std::isfinite(a)) ? a : 0.;
+    cumulative.push_back(total);
+  }
+  if(total > 0 && std::isfinite(total)) return total;
+  for(std::size_t k = 0; k < cumulative.size(); ++k) cumulative[k] = double(k + 1);
+  return double(cumulative.size());
+}
+
+} // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// `n` area-uniform random face locations of `tm`, deterministic for a seed.
@@ -59,6 +115,10 @@ namespace Surface_voronoi {
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+///
+/// Runs in time linear in the size of `tm` and `n` for any finite coordinates (outside the
+/// coordinate range that `validate_input()` checks, the areas are measured on the points
+/// scaled by a power of two; a mesh without any measurable area is sampled face by face).
 ///
 /// \pre `tm` has at least one face
 template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -82,6 +142,12 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
                                      internal::to_point_d(get(vpm, target(next(h, tm), tm))));
     cumulative.push_back(total);
   }
+  // Drawing in [0, total) loops forever for a total of 0 and recurses without end for an
+  // infinite one (Boost's uniform_real): outside the documented coordinate range, areas are
+  // measured on the points scaled by a power of two (the same distribution), and a mesh
+  // without any measurable area is sampled by face index.
+  if(!(total > 0) || !std::isfinite(total))
+    total = internal::scaled_cumulative_areas(tm, vpm, fs, cumulative);
   std::vector<Location> out;
   out.reserve(n);
   for(std::size_t i = 0; i < n; ++i)
@@ -154,8 +220,21 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     const auto h = halfedge(f, tm);
     area += internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
   }
+  // outside the documented coordinate range, on the points scaled by a power of two
+  int e = 0;
+  if(!(area > 0) || !std::isfinite(area))
+  {
+    e = internal::coordinate_exponent(tm, vpm);
+    area = 0;
+    for(auto f : faces(tm))
+    {
+      const double a = internal::scaled_face_area(tm, vpm, f, -e);
+      if(a > 0 && std::isfinite(a)) area += a;
+    }
+  }
   for(const Location& l : candidates)
-    points.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(K())));
+    points.push_back(internal::scaled_point(
+        CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(K())), -e));
   // the largest radius of n disks packed on the area (hexagonal packing), as in Yuksel 2015
   const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n)));
   const double reach = 2 * r_max;

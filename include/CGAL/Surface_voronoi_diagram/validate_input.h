@@ -41,6 +41,15 @@ namespace Surface_voronoi {
 /// only, this check runs in every build: call it on input that may be invalid (the
 /// `surface_voronoi` program calls it before anything else).
 ///
+/// Among the mesh's problems: a face whose area is below \f$ 2^{-44} \f$ (about 5.7e-14)
+/// times its squared longest edge is degenerate (`Input_problem::ZERO_AREA_FACE`, its message
+/// says "degenerate"; a thin needle or cap above that threshold is valid, never refused by an
+/// exact zero-area test); a vertex with a coordinate beyond \f$ 2^{200} \f$ (about 1.6e60) in
+/// magnitude is out of range (`Input_problem::COORDINATE_OUT_OF_RANGE`), and so is a face
+/// whose longest edge is below \f$ 2^{-200} \f$ (`Input_problem::ZERO_AREA_FACE`, "too
+/// small"): within that range the squares and squared areas the diagram computes neither
+/// overflow nor underflow. Scale such a mesh by a power of two (exact) first.
+///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam SiteRange a range of `vertex_descriptor`, `Polygon_mesh_processing::Face_location`
 ///         or points, as for the diagram

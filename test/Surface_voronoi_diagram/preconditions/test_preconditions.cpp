@@ -100,6 +100,17 @@ TEST_CASE("preconditions: the diagram's input", "[preconditions]")
   Euclidean ef(flat);
   require_precondition([&] { Diagram(flat, ef, some_sites(flat, 5)); }, "zero area");
 
+  // a needle below the relative threshold (area below 2^-44 times its squared longest edge)
+  Mesh needle;
+  {
+    const auto a = needle.add_vertex(Point(-0.5, 0, 0)), b = needle.add_vertex(Point(0.5, 0, 0));
+    const auto c = needle.add_vertex(Point(0, 1e-14, 0)), d = needle.add_vertex(Point(0, -0.5, 0));
+    needle.add_face(a, b, c);
+    needle.add_face(b, a, d);
+  }
+  Euclidean en(needle);
+  require_precondition([&] { Diagram(needle, en, std::vector<Mesh::Vertex_index>{ Mesh::Vertex_index(3) }); }, "degenerate");
+
   // a quad
   Mesh quad;
   const auto a = quad.add_vertex(Point(0, 0, 0)), b = quad.add_vertex(Point(1, 0, 0));

@@ -85,11 +85,86 @@ inline Point_d point_at(const Point_d& p0, const Point_d& p1, const Point_d& p2,
   return Point_d(x[0], x[1], x[2]);
 }
 
+/// The Gram determinant `d00 d11 - d01^2` of a triangle's two edge vectors from corner 0,
+/// relative to `d00 d11`, is the squared sine of the angle at corner 0. Below this ratio
+/// (2^-40, a sine below about 1e-6) the determinant has lost most of its digits to
+/// cancellation (its relative error is about 2^-52 / ratio) and may even be exactly zero on a
+/// valid needle or cap: `barycentric_coordinates()` then uses cross products instead.
+constexpr double needle_gram_ratio = 0x1p-40;
+
+/// whether the Gram determinant of triangle (p0, p1, p2) at corner 0 is below
+/// `needle_gram_ratio` of `d00 d11` (or not a finite number): PMP's barycentric coordinates
+/// (and `locate`) must not be used on it
+inline bool is_needle(const Point_d& p0, const Point_d& p1, const Point_d& p2)
+{
+  const Vector_d v0 = p1 - p0, v1 = p2 - p0;
+  const double d00 = v0 * v0, d01 = v0 * v1, d11 = v1 * v1;
+  const double gram = d00 * d11 - d01 * d01;
+  return !(gram > needle_gram_ratio * (d00 * d11) && std::isfinite(gram));
+}
+
 /// barycentric coordinates of `x` in triangle (p0, p1, p2), of its projection on the
-/// triangle's plane if `x` is off it: the package's one way to compute them (PMP's)
+/// triangle's plane if `x` is off it: the package's one way to compute them. PMP's formula
+/// (the Gram determinant of the edge vectors) wherever it is sound, bit for bit; on a needle
+/// or a cap whose determinant is below `needle_gram_ratio` of `d00 d11` (where that formula
+/// divides by noise or by zero), the ratios of the areas of the sub-triangles x p_j p_k to
+/// the triangle's, by cross products taken from `x` (their relative error is about 2^-52
+/// over the sine of the triangle's smallest angle, not its square, and a point on the line
+/// of an edge gets an exact 0 where the edge is axis-aligned). A triangle without any
+/// computable normal (coincident or collinear corners, or squares that overflow) gives the
+/// projection of `x` on its longest edge, or (1, 0, 0) if its corners coincide: never NaN
+/// or infinite for finite input.
 inline Barycentric barycentric_coordinates(const Point_d& p0, const Point_d& p1, const Point_d& p2, const Point_d& x)
 {
-  return CGAL::Polygon_mesh_processing::barycentric_coordinates(p0, p1, p2, x, Double_kernel());
+  if(!is_needle(p0, p1, p2))
+    return CGAL::Polygon_mesh_processing::barycentric_coordinates(p0, p1, p2, x, Double_kernel());
+  const Point_d* p[3] = { &p0, &p1, &p2 };
+  const Vector_d n = CGAL::cross_product(p1 - p0, p2 - p0);
+  const double nn = n * n;
+  Barycentric b = {{ 0., 0., 0. }};
+  if(nn > 0 && std::isfinite(nn))
+  {
+    for(int k = 0; k < 3; ++k)
+      b[k] = (n * CGAL::cross_product(*p[(k + 1) % 3] - x, *p[(k + 2) % 3] - x)) / nn;
+    if(std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2])) return b;
+    b = {{ 0., 0., 0. }};
+  }
+  // no normal: the longest edge (a, b), corners ia and ib, the third corner gets 0
+  int ia = 0;
+  double longest = -1;
+  for(int k = 0; k < 3; ++k)
+  {
+    const double l = CGAL::squared_distance(*p[k], *p[(k + 1) % 3]);
+    if(l > longest) { longest = l; ia = k; }
+  }
+  const int ib = (ia + 1) % 3;
+  if(!(longest > 0) || !std::isfinite(longest))
+  {
+    b[0] = 1.;
+    return b;
+  }
+  const double t = ((x - *p[ia]) * (*p[ib] - *p[ia])) / longest;
+  b[ia] = 1. - t;
+  b[ib] = t;
+  return b;
+}
+
+/// `Polygon_mesh_processing::locate_with_AABB_tree()` made safe on needles: the face nearest
+/// to `p` by `tree`, and `p`'s location in it by PMP's `locate_in_face()` (with `vpm` and
+/// `gt`), or by `barycentric_coordinates()` above when the face `is_needle()`.
+template <class Point, class Tree, class TriangleMesh, class VertexPointMap, class GeomTraits>
+CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
+locate_with_AABB_tree(const Point& p, const Tree& tree, const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits& gt)
+{
+  const auto closest = tree.closest_point_and_primitive(p);
+  const auto f = closest.second;
+  const auto h = halfedge(f, tm);
+  const Point_d p0 = to_point_d(get(vpm, source(h, tm))), p1 = to_point_d(get(vpm, target(h, tm))),
+                p2 = to_point_d(get(vpm, target(next(h, tm), tm)));
+  if(!is_needle(p0, p1, p2))
+    return CGAL::Polygon_mesh_processing::locate_in_face(closest.first, f, tm,
+                                                         CGAL::parameters::vertex_point_map(vpm).geom_traits(gt));
+  return CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>(f, barycentric_coordinates(p0, p1, p2, to_point_d(closest.first)));
 }
 
 } // namespace internal

@@ -108,23 +108,61 @@ std::vector<std::size_t> non_manifold_vertices(const Indexed_mesh<TriangleMesh>&
   return bad;
 }
 
-/// non-finite points, faces without area, isolated vertices, non-manifold vertices
+/// The documented coordinate range: no coordinate beyond 2^200 in magnitude (so that
+/// squared areas, of the fourth power of the coordinates, cannot overflow) ...
+constexpr double max_coordinate = 0x1p200;
+/// ... and no face whose longest edge is shorter than 2^-200 (so that the squared area of a
+/// face at the needle threshold, 2^-88 times the fourth power of that edge, cannot underflow).
+constexpr double min_longest_edge = 0x1p-200;
+/// A face whose area is below 2^-44 (about 5.7e-14) times its squared longest edge (its
+/// height below about 1.1e-13 of that edge) is degenerate: its area, computed with an error
+/// of a few 2^-53 of the squared edge, has lost more than 3 of its digits, and its cotangents
+/// (above 2^43) swamp the Laplacian. Needles and caps above it are computed with (see
+/// `needle_gram_ratio` for the barycentric coordinates).
+constexpr double min_relative_area = 0x1p-44;
+
+/// non-finite points and coordinates out of range, faces without area, degenerate or too
+/// small, isolated vertices, non-manifold vertices
 template <class TriangleMesh>
 void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& list)
 {
-  std::vector<std::uint8_t> used(mesh.number_of_vertices(), 0);
+  std::vector<std::uint8_t> used(mesh.number_of_vertices(), 0), finite(mesh.number_of_vertices(), 1);
   for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
     for(int c = 0; c < 3; ++c)
       if(!std::isfinite(mesh.points[v][c]))
       {
         list.add(Input_problem::NON_FINITE_POINT, v, "vertex " + std::to_string(v) + " has a non-finite coordinate");
+        finite[v] = 0;
+        break;
+      }
+      else if(std::abs(mesh.points[v][c]) > max_coordinate)
+      {
+        list.add(Input_problem::COORDINATE_OUT_OF_RANGE, v, "vertex " + std::to_string(v)
+                 + " has a coordinate beyond 2^200 (1.6e60) in magnitude, outside the range the diagram computes in; scale the mesh");
+        finite[v] = 0;
         break;
       }
   for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
   {
-    for(std::size_t v : mesh.triangles[f]) used[v] = 1;
-    if(!(mesh.face_areas[f] > 0) || !std::isfinite(mesh.face_areas[f]))
+    bool in_range = true;
+    for(std::size_t v : mesh.triangles[f])
+    {
+      used[v] = 1;
+      in_range = in_range && finite[v];
+    }
+    if(!in_range) continue;   // its vertex is reported
+    double longest2 = 0;
+    for(int k = 0; k < 3; ++k)
+      longest2 = (std::max)(longest2, CGAL::squared_distance(mesh.corner(f, k), mesh.corner(f, (k + 1) % 3)));
+    const double area = mesh.face_areas[f];
+    if(!(std::sqrt(longest2) >= min_longest_edge) && longest2 < 1)   // (not a NaN from an overflow)
+      list.add(Input_problem::ZERO_AREA_FACE, f, "face " + std::to_string(f)
+               + " is too small: its longest edge is below 2^-200 (6.2e-61), outside the range the diagram computes in; scale the mesh");
+    else if(!(area > 0) || !std::isfinite(area))
       list.add(Input_problem::ZERO_AREA_FACE, f, "face " + std::to_string(f) + " has zero area");
+    else if(!(area >= min_relative_area * longest2))
+      list.add(Input_problem::ZERO_AREA_FACE, f, "face " + std::to_string(f)
+               + " is degenerate: its area is below 2^-44 (5.7e-14) times its squared longest edge (a needle or a cap too thin to compute with)");
   }
   for(std::size_t v = 0; v < used.size(); ++v)
     if(!used[v]) list.add(Input_problem::ISOLATED_VERTEX, v, "vertex " + std::to_string(v) + " belongs to no face");
