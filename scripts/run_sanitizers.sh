@@ -58,8 +58,10 @@ $program $second --blue-noise 60 --metric euclidean --insert-sites --output $wor
 $program $second --sites $work/second.xyz --metric rvd --output $work/second_rvd.ply
 
 echo "== fuzzers: the seed corpus, then a fixed seed and number of runs"
-runs=${SVD_FUZZ_RUNS:-4000}
-for harness in fuzz_mesh_reader fuzz_sites_reader fuzz_pipeline; do
+# runs per harness, sized so that the three take about a minute together
+for harness_runs in fuzz_mesh_reader:30000 fuzz_sites_reader:100000 fuzz_pipeline:15000; do
+  harness=${harness_runs%%:*}
+  runs=${SVD_FUZZ_RUNS:-${harness_runs#*:}}
   corpus=test/Surface_voronoi_diagram/fuzz/corpus/${harness#fuzz_}
   # the committed corpus stays as it is: new inputs go to a copy
   rm -rf $work/$harness && mkdir -p $work/$harness && cp $corpus/* $work/$harness/
