@@ -40,9 +40,10 @@ echo "== precondition tests (ASan+UBSan, assertions on)"
 $build/test/Surface_voronoi_diagram/svd_precondition_tests
 
 echo "== the program over the bad-input corpus"
-# sanitizers slow the program down about tenfold and need more address space than 4 GiB
+# every case stays within 10 s under the sanitizers too (slowest measured: 5 s, loaded machine);
+# the factor 2 is margin for a slower CI machine. Their shadow memory needs more than 4 GiB.
 python3 test/Surface_voronoi_diagram/bad_input/run_bad_input.py $program --work $work/bad_input \
-  --time-factor 10 --no-memory-limit
+  --time-factor 2 --no-memory-limit
 
 echo "== the program on small real meshes"
 meshes=$build/cgal_data/data/meshes
