@@ -397,20 +397,20 @@ void check_soup_elements(const std::vector<Point_3>& points,
   }
 }
 
-// Ear clipping in a coordinate plane. The polygon is projected along the axis
-// closest to its Newell normal (dropping that coordinate), which maps a planar
-// polygon onto a simple polygon of the same orientation as the best-fit plane
-// does, but keeps the coordinates exact, so the 2D orientation predicates are
-// exact and non-convex corners are never mistaken for ears.
-// Returns false when no ear can be found, i.e. the polygon is not simple in
-// that projection (self-intersecting, or too warped).
-template <class Point_3>
-bool ear_clip_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
-                      std::vector<std::array<std::size_t, 3>>& triangles)
+// The coordinate plane a polygon is projected to: the axis closest to its Newell normal is
+// dropped; `u_axis`, `v_axis` are the kept ones in cyclic order, so that counterclockwise in
+// 2D means along +axis in 3D when `counterclockwise`. False when the normal is zero.
+struct Projection_plane
 {
-  typedef Checking_kernel::Point_2 Point_2;
-  const std::size_t n = polygon.size();
+  int u_axis, v_axis;
+  bool counterclockwise;
+};
 
+template <class Point_3>
+bool projection_plane(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                      Projection_plane& plane)
+{
+  const std::size_t n = polygon.size();
   double normal[3] = { 0, 0, 0 };
   for(std::size_t j = 0; j < n; ++j)
   {
@@ -426,11 +426,32 @@ bool ear_clip_polygon(const std::vector<Point_3>& points, const std::vector<std:
       axis = k;
   if(!(std::abs(normal[axis]) > 0))
     return false;
-  // Cyclic order of the kept axes, so that counterclockwise in 2D means
-  // along +axis in 3D.
-  const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-  const CGAL::Orientation convex = normal[axis] > 0 ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
-  const CGAL::Orientation concave = normal[axis] > 0 ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
+  plane.u_axis = (axis + 1) % 3;
+  plane.v_axis = (axis + 2) % 3;
+  plane.counterclockwise = normal[axis] > 0;
+  return true;
+}
+
+// Ear clipping in a coordinate plane. The polygon is projected along the axis
+// closest to its Newell normal (dropping that coordinate), which maps a planar
+// polygon onto a simple polygon of the same orientation as the best-fit plane
+// does, but keeps the coordinates exact, so the 2D orientation predicates are
+// exact and non-convex corners are never mistaken for ears.
+// Returns false when no ear can be found, i.e. the polygon is not simple in
+// that projection (self-intersecting, or too warped).
+template <class Point_3>
+bool ear_clip_polygon(const std::vector<Point_3>& points, const std::vector<std::size_t>& polygon,
+                      std::vector<std::array<std::size_t, 3>>& triangles)
+{
+  typedef Checking_kernel::Point_2 Point_2;
+  const std::size_t n = polygon.size();
+
+  Projection_plane plane;
+  if(!projection_plane(points, polygon, plane))
+    return false;
+  const int u_axis = plane.u_axis, v_axis = plane.v_axis;
+  const CGAL::Orientation convex = plane.counterclockwise ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  const CGAL::Orientation concave = plane.counterclockwise ? CGAL::RIGHT_TURN : CGAL::LEFT_TURN;
 
   const std::vector<std::size_t>& ring = polygon;
   std::vector<Point_2> q(n);
@@ -538,23 +559,11 @@ bool cdt_triangulate_polygon(const std::vector<Point_3>& points, const std::vect
   typedef typename CDT::Face_handle Face_handle;
   const std::size_t n = polygon.size();
 
-  double normal[3] = { 0, 0, 0 };
-  for(std::size_t j = 0; j < n; ++j)
-  {
-    const Checking_kernel::Point_3 a = to_checking_point(points[polygon[j]]);
-    const Checking_kernel::Point_3 b = to_checking_point(points[polygon[(j + 1) % n]]);
-    normal[0] += (a.y() - b.y()) * (a.z() + b.z());
-    normal[1] += (a.z() - b.z()) * (a.x() + b.x());
-    normal[2] += (a.x() - b.x()) * (a.y() + b.y());
-  }
-  int axis = 0;
-  for(int k = 1; k < 3; ++k)
-    if(std::abs(normal[k]) > std::abs(normal[axis]))
-      axis = k;
-  if(!(std::abs(normal[axis]) > 0))
+  Projection_plane plane;
+  if(!projection_plane(points, polygon, plane))
     return false;
-  const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-  const bool counterclockwise = normal[axis] > 0;
+  const int u_axis = plane.u_axis, v_axis = plane.v_axis;
+  const bool counterclockwise = plane.counterclockwise;
 
   std::vector<std::pair<K::Point_2, std::size_t>> q(n);
   for(std::size_t j = 0; j < n; ++j)
