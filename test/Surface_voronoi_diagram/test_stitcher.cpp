@@ -369,3 +369,42 @@ TEST_CASE("stitch: a lattice of sites whose bisectors run along grid lines", "[s
   for(std::size_t s = 0; s < sites.size(); ++s)
     CHECK(shifted[s] == Approx(shifted_extent[s % 4] * shifted_extent[s / 4]).epsilon(1e-12));
 }
+
+TEST_CASE("stitch: a triple point on a needle, where two sites' fields differ by 1e-20", "[stitcher][numerics]")
+{
+  // Found by fuzz_pipeline: a face 2^-32 wide, two sites 1e-10 apart on its short edge and a
+  // third far away. In doubles d0 - d1 and d0 - d2 round to the same vector, so the cross
+  // product that places the triple point was 0 and its coordinates NaN (NaN cell areas). The
+  // triple point is (7/32, 1/8, 21/32) in barycentric coordinates, exactly.
+  const double w = std::ldexp(1., -32);
+  const St_mesh m = st_make({ { 0, 0, -1 }, { 0, 0, 0 }, { 0, w, -1 } }, { { 0, 1, 2 } });
+  const double tiny = std::ldexp(1., -66);
+  const std::vector<std::vector<double> > field = { { 0.0625, 0.5625, 0.0625 }, { tiny, 1, tiny }, { 4 * tiny, 1, 0 } };
+  const auto r = st_run_fields(m, field);
+  std::size_t triple_points = 0;
+  double area = 0;
+  std::set<std::size_t> owners;
+  for(const SVI::Partition::Piece& p : r->part.pieces)
+  {
+    St_vector newell(0, 0, 0);
+    for(std::size_t k = 0; k < p.vertices.size(); ++k)
+    {
+      const SVI::Point_d& u = r->part.vertices[p.vertices[k]].point;
+      for(int c = 0; c < 3; ++c) REQUIRE(std::isfinite(u[c]));
+      newell = newell + CGAL::cross_product(st_vec(u), st_vec(r->part.vertices[p.vertices[(k + 1) % p.vertices.size()]].point));
+    }
+    area += 0.5 * std::sqrt(newell.squared_length());
+    owners.insert(p.site);
+  }
+  for(const SVI::Partition::Vertex& v : r->part.vertices)
+    if(v.kind == SVI::Partition::IN_FACE)
+    {
+      ++triple_points;
+      CHECK(v.point.x() == 0);
+      CHECK(v.point.y() == Approx(21. / 32 * w).epsilon(1e-12));
+      CHECK(v.point.z() == Approx(-0.875).epsilon(1e-15));
+    }
+  CHECK(triple_points == 1);
+  CHECK(owners.size() == 3);
+  CHECK(area == Approx(r->mesh.total_area).epsilon(1e-9));
+}

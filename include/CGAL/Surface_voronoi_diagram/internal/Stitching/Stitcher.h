@@ -33,7 +33,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <unordered_map>
 #include <vector>
@@ -221,7 +223,10 @@ private:
         Barycentric b = {{ c.x(), c.y(), c.z() }};
         double s = 0;
         for(double& x : b) s += x;
-        for(double& x : b) x /= s;
+        if(is_well_conditioned(s, r1, r2))
+          for(double& x : b) x /= s;
+        else
+          b = exact_triple_point(f, k);
         // rounding may push the point a hair outside its face: keep it on the face
         double s2 = 0;
         for(double& x : b) { x = (std::max)(0., x); s2 += x; }
@@ -231,6 +236,51 @@ private:
     }
     m_representative.resize(m_origins.size());
     for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
+  }
+
+  // Whether the rounded sum s of r1 x r2 is far enough from its rounding error (a few ulps of
+  // |r1| |r2|) to divide by. It is not when two sites' fields differ by far less than the
+  // third's (two sites 1e-10 apart on a needle): r1 and r2 then round to the same vector.
+  static bool is_well_conditioned(double s, const Vector_d& r1, const Vector_d& r2)
+  {
+    const double n1 = std::abs(r1.x()) + std::abs(r1.y()) + std::abs(r1.z());
+    const double n2 = std::abs(r2.x()) + std::abs(r2.y()) + std::abs(r2.z());
+    const double bound = 64 * std::numeric_limits<double>::epsilon() * n1 * n2;
+    return std::isfinite(s) && std::isfinite(bound) && std::abs(s) > bound;
+  }
+
+  // The triple point computed with rationals, then rounded: for the ill-conditioned case only.
+  // Exact parallel bisectors have no triple point, and the cutter (deciding exactly) does not
+  // make one; the centroid is only a guard.
+  Barycentric exact_triple_point(std::size_t f, const Vertex_key& k) const
+  {
+    std::array<Exact_number, 3> e;
+    Barycentric b = {{ 1. / 3, 1. / 3, 1. / 3 }};
+    if(exact_triple_barycentric(f, k, e))
+      for(int c = 0; c < 3; ++c) b[c] = CGAL::to_double(e[c]);
+    return b;
+  }
+
+  // The barycentric coordinates where the three fields of a triple-point key are equal, in
+  // rationals; false when the bisectors are parallel.
+  bool exact_triple_barycentric(std::size_t f, const Vertex_key& k, std::array<Exact_number, 3>& b) const
+  {
+    const double* d0 = values_of(f, k.sites[0]);
+    const double* d1 = values_of(f, k.sites[1]);
+    const double* d2 = values_of(f, k.sites[2]);
+    std::array<Exact_number, 3> r1, r2;
+    for(int c = 0; c < 3; ++c)
+    {
+      r1[c] = Exact_number(d0[c]) - Exact_number(d1[c]);
+      r2[c] = Exact_number(d0[c]) - Exact_number(d2[c]);
+    }
+    b[0] = r1[1] * r2[2] - r1[2] * r2[1];
+    b[1] = r1[2] * r2[0] - r1[0] * r2[2];
+    b[2] = r1[0] * r2[1] - r1[1] * r2[0];
+    const Exact_number s = b[0] + b[1] + b[2];
+    if(CGAL::is_zero(s)) return false;
+    for(Exact_number& x : b) x = x / s;
+    return true;
   }
 
   // Where a vertex lies, exactly: at a corner, on an edge at parameter c[0], or in a face
@@ -272,20 +322,9 @@ private:
       l.c[0] = da / (da - db);
       return l;
     }
-    const double* d0 = values_of(f, k.sites[0]);
-    const double* d1 = values_of(f, k.sites[1]);
-    const double* d2 = values_of(f, k.sites[2]);
-    std::array<Exact_number, 3> r1, r2, b;
-    for(int c = 0; c < 3; ++c)
-    {
-      r1[c] = Exact_number(d0[c]) - Exact_number(d1[c]);
-      r2[c] = Exact_number(d0[c]) - Exact_number(d2[c]);
-    }
-    b[0] = r1[1] * r2[2] - r1[2] * r2[1];
-    b[1] = r1[2] * r2[0] - r1[0] * r2[2];
-    b[2] = r1[0] * r2[1] - r1[1] * r2[0];
-    const Exact_number s = b[0] + b[1] + b[2];
-    for(Exact_number& x : b) x = x / s;
+    std::array<Exact_number, 3> b;
+    if(!exact_triple_barycentric(f, k, b))
+      return Exact_location{ Partition::IN_FACE, f, {{ Exact_number(1) / 3, Exact_number(1) / 3, Exact_number(1) / 3 }} };
     int zeros = 0, nonzero = -1;
     for(int c = 0; c < 3; ++c)
     {
