@@ -223,36 +223,74 @@ template <class PolygonRange>
 bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
 {
   std::vector<std::size_t> corner_offset(polygons.size() + 1, 0);
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
-  const std::size_t number_of_corners = corner_offset.back();
-
-  std::vector<Soup_half_edge> half_edges;
-  half_edges.reserve(number_of_corners);
-  std::vector<std::size_t> corner_vertex(number_of_corners);
+  std::size_t number_of_vertices = 0;
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
-    const std::size_t m = polygons[f].size();
+    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
+    for(std::size_t v : polygons[f])
+      number_of_vertices = (std::max)(number_of_vertices, v + 1);
+  }
+  const std::size_t number_of_corners = corner_offset.back();
+
+  // Half-edges grouped by their lower vertex with a counting sort (linear, unlike a sort of
+  // the whole array), then ordered by (hi, face) within each group: the same order as a
+  // sort by (lo, hi, face), so messages name the same elements.
+  std::vector<std::size_t> edge_begin(number_of_vertices + 1, 0);
+  std::vector<std::size_t> corner_begin(number_of_vertices + 1, 0);
+  for(const auto& polygon : polygons)
+  {
+    const std::size_t m = polygon.size();
     for(std::size_t j = 0; j < m; ++j)
     {
-      const std::size_t u = polygons[f][j], w = polygons[f][(j + 1) % m];
-      const std::size_t cu = corner_offset[f] + j, cw = corner_offset[f] + (j + 1) % m;
-      corner_vertex[cu] = u;
-      if(u < w)
-        half_edges.push_back(Soup_half_edge{ u, w, f, cu, cw, true });
-      else
-        half_edges.push_back(Soup_half_edge{ w, u, f, cw, cu, false });
+      ++edge_begin[(std::min)(polygon[j], polygon[(j + 1) % m]) + 1];
+      ++corner_begin[polygon[j] + 1];
     }
   }
-  std::sort(half_edges.begin(), half_edges.end(),
-            [](const Soup_half_edge& a, const Soup_half_edge& b) {
-              return std::tie(a.lo, a.hi, a.face) < std::tie(b.lo, b.hi, b.face);
-            });
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+  {
+    edge_begin[v + 1] += edge_begin[v];
+    corner_begin[v + 1] += corner_begin[v];
+  }
+  std::vector<Soup_half_edge> half_edges(number_of_corners);
+  std::vector<std::size_t> corners_by_vertex(number_of_corners);
+  {
+    std::vector<std::size_t> edge_fill(edge_begin.begin(), edge_begin.end() - 1);
+    std::vector<std::size_t> corner_fill(corner_begin.begin(), corner_begin.end() - 1);
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+    {
+      const std::size_t m = polygons[f].size();
+      for(std::size_t j = 0; j < m; ++j)
+      {
+        const std::size_t u = polygons[f][j], w = polygons[f][(j + 1) % m];
+        const std::size_t cu = corner_offset[f] + j, cw = corner_offset[f] + (j + 1) % m;
+        corners_by_vertex[corner_fill[u]++] = cu;
+        half_edges[edge_fill[(std::min)(u, w)]++] =
+            u < w ? Soup_half_edge{ u, w, f, cu, cw, true } : Soup_half_edge{ w, u, f, cw, cu, false };
+      }
+    }
+  }
+  const auto edge_order = [](const Soup_half_edge& a, const Soup_half_edge& b) {
+    return std::tie(a.hi, a.face, a.corner_lo) < std::tie(b.hi, b.face, b.corner_lo);
+  };
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
+  {
+    const auto first = half_edges.begin() + std::ptrdiff_t(edge_begin[v]);
+    const auto last = half_edges.begin() + std::ptrdiff_t(edge_begin[v + 1]);
+    if(last - first <= 16)
+    {
+      for(auto i = first; i != last; ++i)   // insertion sort: groups are a vertex's few edges
+        for(auto j = i; j != first && edge_order(*j, *(j - 1)); --j)
+          std::iter_swap(j, j - 1);
+    }
+    else
+      std::sort(first, last, edge_order);
+  }
 
   // Corners of the same vertex are glued across every edge shared by exactly
   // two faces; the connected classes of corners of a vertex are its fans.
   Index_union_find corners(number_of_corners);
   std::vector<Face_link> links;
+  links.reserve(number_of_corners / 2);
   bool consistently_oriented = true;
   for(std::size_t begin = 0; begin < half_edges.size();)
   {
@@ -283,25 +321,28 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     }
     begin = end;
   }
+  std::vector<Soup_half_edge>().swap(half_edges);
 
-  std::vector<std::pair<std::size_t, std::size_t>> vertex_fan(number_of_corners);
-  for(std::size_t c = 0; c < number_of_corners; ++c)
-    vertex_fan[c] = std::make_pair(corner_vertex[c], corners.find(c));
-  std::sort(vertex_fan.begin(), vertex_fan.end());
-  vertex_fan.erase(std::unique(vertex_fan.begin(), vertex_fan.end()), vertex_fan.end());
-  for(std::size_t begin = 0; begin < vertex_fan.size();)
+  // one fan per vertex: all its corners in one class
+  for(std::size_t v = 0; v < number_of_vertices; ++v)
   {
-    std::size_t end = begin + 1;
-    while(end < vertex_fan.size() && vertex_fan[end].first == vertex_fan[begin].first)
-      ++end;
-    if(end - begin > 1)
-    {
-      std::ostringstream msg;
-      msg << "vertex " << vertex_fan[begin].first << " is non-manifold: its faces form "
-          << (end - begin) << " separate fans" << name.context();
-      throw Input_error(msg.str());
-    }
-    begin = end;
+    const std::size_t begin = corner_begin[v], end = corner_begin[v + 1];
+    if(begin == end)
+      continue;
+    const std::size_t root = corners.find(corners_by_vertex[begin]);
+    bool one_fan = true;
+    for(std::size_t i = begin + 1; i < end && one_fan; ++i)
+      one_fan = corners.find(corners_by_vertex[i]) == root;
+    if(one_fan)
+      continue;
+    std::vector<std::size_t> roots;
+    for(std::size_t i = begin; i < end; ++i)
+      roots.push_back(corners.find(corners_by_vertex[i]));
+    std::sort(roots.begin(), roots.end());
+    const std::size_t fans = std::size_t(std::unique(roots.begin(), roots.end()) - roots.begin());
+    std::ostringstream msg;
+    msg << "vertex " << v << " is non-manifold: its faces form " << fans << " separate fans" << name.context();
+    throw Input_error(msg.str());
   }
 
   // Two-colouring of the face adjacency graph: a face keeps (0) or flips (1)
@@ -816,8 +857,12 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
     for(std::size_t& v : tri)
       v = new_index[v];
 
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
-    throw Input_error("the checked triangles do not form a valid polygon mesh (unexpected defect)");
+  // The checks above are those of PMP::is_polygon_soup_a_polygon_mesh() (manifold edges and
+  // vertices, no repeated corner) in linear time; after a re-orientation, the same checks
+  // confirm it (a soup the orienter could not fix is refused, not built).
+  if(report.reoriented &&
+     !internal::check_soup_topology(triangles, internal::Face_namer(&triangle_face, " after re-orienting faces")))
+    throw Input_error("the mesh cannot be oriented consistently (it is not an orientable manifold surface)");
 
   CGAL::clear(mesh);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(kept_points, triangles, mesh);

@@ -192,34 +192,125 @@ auto with_diagram_parameters(const Diagram_choices& choices, const NamedParamete
   return f(SV::parameters::site_weight_map(CGAL::make_property_map(choices.weights), chain));
 }
 
-// Projection to the surface, made idempotent: locating a point and constructing it again
-// may move it by an ulp, possibly back and forth between two faces at an edge. Iterate
-// until the sequence repeats and take the lexicographically smallest point of the cycle:
-// written with 17 digits by --sites-out and read back, it gives the very same location,
-// so the diagram is reproduced bit for bit. The library's locate is PMP's, safe on needles
-// and caps (PMP's divides by a Gram determinant that cancels to zero on them).
-template <class Tree>
-Location locate(const Point& p, const Tree& tree, const Mesh& mesh)
+// Sites that --sites-out must give back bit for bit: read back, the point written for a
+// site must be located at that very site. Two kinds of sites have that property:
+//  - a fixed point: a location inside its face (every coordinate at least 2^-20, so that the
+//    nearest face is not in doubt) whose point locates back to it. Locating and
+//    constructing again is iterated to find one (a point can drift by an ulp a step);
+//  - a grid point, for sites near an edge or a vertex, or whose drift does not settle:
+//    barycentric coordinates multiples of 2^-24, a site on an edge or at a vertex being
+//    given in the lowest-index face holding it. The written point locates back to
+//    coordinates within rounding (some 1e-15) of the grid values, which are recognized
+//    (within 2^-44) and snapped back. A site moves by at most 2^-25 of its face.
+// Neither needs an AABB tree: only points read from a file are searched for globally.
+const double site_grid_step = std::ldexp(1., -24);
+const double site_grid_tolerance = std::ldexp(1., -44);
+const double site_interior = std::ldexp(1., -20);
+
+bool is_on_site_grid(const Location& l)
 {
-  return SV::internal::locate_with_AABB_tree(p, tree, mesh, get(CGAL::vertex_point, mesh), K());
+  for(double x : l.second)
+    if(!(std::abs(x - std::round(x / site_grid_step) * site_grid_step) <= site_grid_tolerance)) return false;
+  return true;
 }
 
-template <class Tree>
-Location canonical_location(Point& p, const Tree& tree, const Mesh& mesh)
+bool is_inside_face(const Location& l)
 {
-  std::vector<Point> seen(1, p);
-  std::size_t cycle_start = 0;
-  for(int k = 0; k < 16; ++k)
+  for(double x : l.second)
+    if(!(x >= site_interior)) return false;
+  return true;
+}
+
+// The face nearest to p among `start` and the faces sharing a vertex with it (the lowest
+// index on a tie), and the location there of p's nearest point: the AABB tree's answer for
+// points next to `start`, computed alike (the same triangles, the same projection).
+Location locate_near(const Point& p, Mesh::Face_index start, const Mesh& mesh)
+{
+  const K k;
+  // corners in the order of the AABB tree's triangles, so that projections round alike
+  const auto triangle = [&](Mesh::Face_index f) {
+    const Mesh::Halfedge_index h = mesh.halfedge(f);
+    return K::Triangle_3(mesh.point(mesh.target(h)), mesh.point(mesh.target(mesh.next(h))), mesh.point(mesh.source(h)));
+  };
+  Mesh::Face_index best = start;
+  Point best_point = k.construct_projected_point_3_object()(triangle(start), p);
+  for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(start), mesh))
+    for(Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+    {
+      if(f == Mesh::null_face() || f == start) continue;
+      const Point q = k.construct_projected_point_3_object()(triangle(f), p);
+      const CGAL::Comparison_result c = k.compare_distance_3_object()(p, q, best_point);
+      if(c == CGAL::SMALLER || (c == CGAL::EQUAL && f < best)) { best = f; best_point = q; }
+    }
+  return SV::internal::locate_in_face(best_point, best, mesh, get(CGAL::vertex_point, mesh), k);
+}
+
+Location on_site_grid(Location l, const Mesh& mesh)
+{
+  std::array<double, 3>& b = l.second;
+  double sum = 0;
+  for(double& x : b)
   {
-    const Location l = locate(seen.back(), tree, mesh);
-    const Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
-    const auto it = std::find(seen.begin(), seen.end(), q);
-    if(it != seen.end()) { cycle_start = std::size_t(it - seen.begin()); break; }
-    seen.push_back(q);
-    cycle_start = seen.size() - 1;
+    x = (std::max)(0., std::round(x / site_grid_step) * site_grid_step);   // -0 becomes +0
+    sum += x;
   }
-  p = *std::min_element(seen.begin() + std::ptrdiff_t(cycle_start), seen.end());
-  return locate(p, tree, mesh);
+  // coordinates sum to 1: the largest one takes the difference (exact, on the grid)
+  const int largest = int(std::max_element(b.begin(), b.end()) - b.begin());
+  if(sum <= 0) b = {{ 1., 0., 0. }};
+  else b[largest] = 1. - (b[(largest + 1) % 3] + b[(largest + 2) % 3]);
+
+  // on an edge or at a vertex: the lowest-index face holding it, the same coordinates per vertex
+  const Mesh::Halfedge_index h0 = mesh.halfedge(l.first);
+  const Mesh::Vertex_index corner[3] = { mesh.source(h0), mesh.target(h0), mesh.target(mesh.next(h0)) };
+  std::vector<Mesh::Face_index> holders;
+  const int zeros = int(std::count(b.begin(), b.end(), 0.));
+  if(zeros == 2)
+  {
+    for(Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(corner[largest]), mesh))
+      if(f != Mesh::null_face()) holders.push_back(f);
+  }
+  else if(zeros == 1)
+  {
+    const int z = int(std::find(b.begin(), b.end(), 0.) - b.begin());
+    const Mesh::Halfedge_index h = CGAL::halfedge(corner[(z + 1) % 3], corner[(z + 2) % 3], mesh).first;
+    for(Mesh::Halfedge_index side : { h, mesh.opposite(h) })
+      if(!mesh.is_border(side)) holders.push_back(mesh.face(side));
+  }
+  if(holders.empty()) return l;
+  const Mesh::Face_index c = *std::min_element(holders.begin(), holders.end());
+  if(c == l.first) return l;
+  Location moved(c, {{ 0., 0., 0. }});
+  const Mesh::Halfedge_index hc = mesh.halfedge(c);
+  const Mesh::Vertex_index in_c[3] = { mesh.source(hc), mesh.target(hc), mesh.target(mesh.next(hc)) };
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j)
+      if(corner[i] == in_c[j]) moved.second[j] = b[i];
+  return moved;
+}
+
+// The site a location stands for (see above), and its point: what --sites-out writes. A
+// drift that ends in a cycle of several locations (a point hopping between two) gives the
+// cycle's location of smallest point, which the same iteration finds from any of them.
+Location canonical_location(Location l, const Mesh& mesh, Point& point)
+{
+  std::vector<std::pair<Location, Point> > seen;
+  for(int step = 0; step < 64 && !is_on_site_grid(l) && is_inside_face(l); ++step)
+  {
+    const Point c = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+    seen.emplace_back(l, c);
+    l = locate_near(c, l.first, mesh);
+    const auto again = std::find_if(seen.begin(), seen.end(), [&](const std::pair<Location, Point>& x) { return x.first == l; });
+    if(again != seen.end())
+    {
+      const auto smallest = std::min_element(again, seen.end(), [](const std::pair<Location, Point>& x,
+                                                                   const std::pair<Location, Point>& y) { return x.second < y.second; });
+      point = smallest->second;
+      return smallest->first;
+    }
+  }
+  l = on_site_grid(l, mesh);
+  point = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
+  return l;
 }
 
 // The power of two 2^e the mesh is scaled by (its points multiplied by 2^-e), 0 for a mesh
@@ -382,11 +473,6 @@ int run_main(int argc, char** argv)
     const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
     return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
   }();
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  Tree tree;
-  CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
-  tree.accelerate_distance_queries();
   std::vector<Point> site_points;
   std::vector<double> weights;
   const std::size_t per_face_limit = args.insert_sites ? max_inserted_sites_per_face : max_sites_per_face;
@@ -403,11 +489,20 @@ int run_main(int argc, char** argv)
       fail(1, args.sites + ": the sites file has " + std::to_string(records.size()) + " sites, more than the limit of "
               + std::to_string(max_sites));
     const double limit = args.max_site_distance * diagonal;
+    // only points read from a file need a search over the whole surface
+    typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+    Tree tree;
+    CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
+    tree.accelerate_distance_queries();
     for(const Site_record& r : records)
     {
       const Point p = scaled(Point(r.x, r.y, r.z), -args.scale);
       Point q = p;
-      const Location l = canonical_location(q, tree, mesh);
+      const auto nearest = tree.closest_point_and_primitive(p);
+      const Location l = canonical_location(SV::internal::locate_in_face(nearest.first, nearest.second, mesh,
+                                                                         get(CGAL::vertex_point, mesh), K()),
+                                            mesh, q);
       const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
       if(d > limit)
       {
@@ -436,8 +531,8 @@ int run_main(int argc, char** argv)
       : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), CGAL::parameters::random_seed(args.seed));
     for(const Location& l : drawn)
     {
-      Point q = CGAL::Polygon_mesh_processing::construct_point(l, mesh);
-      locations.push_back(canonical_location(q, tree, mesh));
+      Point q;
+      locations.push_back(canonical_location(l, mesh, q));
       site_points.push_back(q);
     }
   }
@@ -521,9 +616,7 @@ int run_main(int argc, char** argv)
       lloyd_energies = r.energies;
       for(std::size_t i = 0; i < r.sites.size(); ++i)
       {
-        Point q = CGAL::Polygon_mesh_processing::construct_point(r.sites[i], mesh);
-        locations[i] = canonical_location(q, tree, mesh);
-        site_points[i] = q;
+        locations[i] = canonical_location(r.sites[i], mesh, site_points[i]);
       }
     }
     catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }

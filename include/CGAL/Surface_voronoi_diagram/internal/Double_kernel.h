@@ -149,22 +149,29 @@ inline Barycentric barycentric_coordinates(const Point_d& p0, const Point_d& p1,
   return b;
 }
 
+/// The location of `p`, a point of face `f`, in `f`: PMP's `locate_in_face()` (with `vpm`
+/// and `gt`), or `barycentric_coordinates()` above when `f` `is_needle()`.
+template <class Point, class TriangleMesh, class VertexPointMap, class GeomTraits>
+CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
+locate_in_face(const Point& p, typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& tm,
+               const VertexPointMap& vpm, const GeomTraits& gt)
+{
+  const auto h = halfedge(f, tm);
+  const Point_d p0 = to_point_d(get(vpm, source(h, tm))), p1 = to_point_d(get(vpm, target(h, tm))),
+                p2 = to_point_d(get(vpm, target(next(h, tm), tm)));
+  if(!is_needle(p0, p1, p2))
+    return CGAL::Polygon_mesh_processing::locate_in_face(p, f, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(gt));
+  return CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>(f, barycentric_coordinates(p0, p1, p2, to_point_d(p)));
+}
+
 /// `Polygon_mesh_processing::locate_with_AABB_tree()` made safe on needles: the face nearest
-/// to `p` by `tree`, and `p`'s location in it by PMP's `locate_in_face()` (with `vpm` and
-/// `gt`), or by `barycentric_coordinates()` above when the face `is_needle()`.
+/// to `p` by `tree`, and `p`'s location in it by `locate_in_face()` above.
 template <class Point, class Tree, class TriangleMesh, class VertexPointMap, class GeomTraits>
 CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
 locate_with_AABB_tree(const Point& p, const Tree& tree, const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits& gt)
 {
   const auto closest = tree.closest_point_and_primitive(p);
-  const auto f = closest.second;
-  const auto h = halfedge(f, tm);
-  const Point_d p0 = to_point_d(get(vpm, source(h, tm))), p1 = to_point_d(get(vpm, target(h, tm))),
-                p2 = to_point_d(get(vpm, target(next(h, tm), tm)));
-  if(!is_needle(p0, p1, p2))
-    return CGAL::Polygon_mesh_processing::locate_in_face(closest.first, f, tm,
-                                                         CGAL::parameters::vertex_point_map(vpm).geom_traits(gt));
-  return CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>(f, barycentric_coordinates(p0, p1, p2, to_point_d(closest.first)));
+  return locate_in_face(closest.first, closest.second, tm, vpm, gt);
 }
 
 } // namespace internal
