@@ -48,7 +48,30 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
     return false;
   };
   const std::size_t nf = mesh.number_of_faces();
+  auto is_whole_face = [&](std::size_t g) { return partition.face_begin[g + 1] == partition.face_begin[g] + 1; };
   for(std::size_t f = 0; f < nf; ++f)
+  {
+    // A face in one piece (most faces, when sites are fewer than faces) meets a neighbour in
+    // one piece along the whole edge: no search through the pieces' vertices.
+    if(is_whole_face(f))
+    {
+      const std::size_t p = partition.face_begin[f];
+      bool all_whole = true;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t g = mesh.neighbors[f][k];
+        all_whole = all_whole && (g == Indexed_mesh<TriangleMesh>::none || is_whole_face(g));
+      }
+      if(all_whole)
+      {
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t g = mesh.neighbors[f][k];
+          if(g != Indexed_mesh<TriangleMesh>::none && partition.face_begin[g] > p) adjacent(p, partition.face_begin[g], mesh.edges[f][k]);
+        }
+        continue;
+      }
+    }
     for(std::size_t p = partition.face_begin[f]; p < partition.face_begin[f + 1]; ++p)
     {
       const std::vector<std::size_t>& v = partition.pieces[p].vertices;
@@ -92,6 +115,7 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
         }
       }
     }
+  }
 }
 
 struct Cell_components

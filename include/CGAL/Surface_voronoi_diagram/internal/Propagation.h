@@ -54,7 +54,7 @@ public:
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
               const Blocked& blocked)
     : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked),
-      m_epoch(mesh.number_of_faces(), 0)
+      m_epoch(mesh.number_of_faces(), 0), m_offers(mesh.number_of_faces())
   {}
 
   Candidate_lists candidates;
@@ -64,7 +64,8 @@ public:
   void run()
   {
     candidates.assign(m_mesh.number_of_faces(), std::vector<Candidate>());
-    m_offered.reset(8 * m_mesh.number_of_faces());
+    m_offers.assign(m_mesh.number_of_faces(), Offers());
+    m_offered.reset(m_mesh.number_of_faces() / 8 + 16);
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       offer(static_cast<std::uint32_t>(i), m_site_faces[i]);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
@@ -86,11 +87,12 @@ public:
                  list.end());
       CGAL_assertion(m_epoch[f] + 1 < max_epochs);
       ++m_epoch[f];   // forget what was offered to f: everything may be offered again
+      m_offers[f].count = 0;
       is_touched[f] = 1;
     }
     for(std::size_t f : dirty)
     {
-      for(const Candidate& x : candidates[f]) m_offered.insert(key(x.site, f));
+      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t g = m_mesh.neighbors[f][k];
@@ -113,12 +115,20 @@ public:
   }
 
 private:
+  // Small, so that the heap moves little memory: the field values are computed again when
+  // the event is taken (the same computation, the same bits).
   struct Event
   {
     double key;
     std::uint32_t site;
     std::uint32_t face;
-    std::array<double, 3> value;
+  };
+  // The sites offered to a face in its current epoch: the first few inline (a face is
+  // offered a handful), the others in a hash table keyed by (site, face, epoch).
+  struct Offers
+  {
+    std::array<std::uint32_t, 5> site;
+    std::uint32_t count = 0;
   };
   struct Later
   {
@@ -135,21 +145,36 @@ private:
     return (std::uint64_t(site) * m_mesh.number_of_faces() + face) * max_epochs + m_epoch[face];
   }
 
+  // records that `site` was offered to `f` in its current epoch; false if it already was
+  bool mark_offered(std::uint32_t site, std::size_t f)
+  {
+    Offers& o = m_offers[f];
+    const std::size_t inline_count = (std::min)(std::size_t(o.count), o.site.size());
+    for(std::size_t i = 0; i < inline_count; ++i)
+      if(o.site[i] == site) return false;
+    if(o.count >= o.site.size() && !m_offered.insert(key(site, f)).second) return false;
+    if(o.count < o.site.size()) o.site[o.count] = site;
+    ++o.count;
+    return true;
+  }
+
+  std::array<double, 3> field_values(std::uint32_t site, std::size_t f) const
+  {
+    std::array<double, 3> value;
+    for(int k = 0; k < 3; ++k)
+      value[k] = m_fields.value(site, m_mesh.triangles[f][k]);
+    return value;
+  }
+
   // offers the field of `site` to face `f`, once per (site, face) and epoch
   void offer(std::uint32_t site, std::size_t f)
   {
-    if(!m_offered.insert(key(site, f)).second) return;
-    Event e;
-    e.site = site;
-    e.face = static_cast<std::uint32_t>(f);
-    for(int k = 0; k < 3; ++k)
-      e.value[k] = m_fields.value(site, m_mesh.triangles[f][k]);
+    if(!mark_offered(site, f)) return;
+    const Candidate x = { site, field_values(site, f) };
     // lists only grow: a field dominated now stays dominated, so do not queue it
-    const Candidate x = { e.site, e.value };
     for(const Candidate& b : candidates[f])
       if(dominates(b, x)) { ++statistics.pruned; return; }
-    e.key = (std::min)((std::min)(e.value[0], e.value[1]), e.value[2]);
-    m_queue.push(e);
+    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f) });
   }
 
   template <class Banned>
@@ -160,7 +185,7 @@ private:
       const Event e = m_queue.top();
       m_queue.pop();
       ++statistics.events;
-      const Candidate x = { e.site, e.value };
+      const Candidate x = { e.site, field_values(e.site, e.face) };
       std::vector<Candidate>& list = candidates[e.face];
       bool pruned = false;
       for(const Candidate& b : list)
@@ -187,6 +212,7 @@ private:
   const std::vector<std::size_t>& m_site_faces;
   Blocked m_blocked;
   std::vector<std::uint32_t> m_epoch;
+  std::vector<Offers> m_offers;
   Flat_hash_table<Key_slot<std::uint64_t> > m_offered;
   std::priority_queue<Event, std::vector<Event>, Later> m_queue;
 };
