@@ -141,7 +141,13 @@ private:
     for(std::size_t k = 0; k < count; ++k)
     {
       const std::size_t f = which ? (*which)[k] : k;
-      m_cuts[f] = candidates[f].empty() ? Face_cut() : Face_cutter(candidates[f]).cut();
+      if(candidates[f].size() == 1)
+      {
+        m_cuts[f] = Face_cut();
+        m_cuts[f].whole_face = true;
+      }
+      else
+        m_cuts[f] = candidates[f].empty() ? Face_cut() : Face_cutter(candidates[f]).cut();
     }
   }
 

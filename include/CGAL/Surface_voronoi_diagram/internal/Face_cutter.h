@@ -60,6 +60,9 @@ struct Face_cut
 {
   std::vector<Symbolic_piece> pieces;
   bool degenerate = false;                    // some vertex lies exactly on a further bisector
+  // The only candidate owns the whole triangle, and `pieces` is left empty: the cut of most
+  // faces, stitched without allocating anything for it.
+  bool whole_face = false;
 };
 
 class Face_cutter

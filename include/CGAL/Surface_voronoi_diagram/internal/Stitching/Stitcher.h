@@ -169,6 +169,16 @@ private:
         out.pieces.push_back(std::move(p));
         continue;
       }
+      if(m_cuts[f].whole_face)
+      {
+        // as the cutter's one piece would be: the three corners, in order
+        Partition::Piece p{ f, m_candidates[f][0].site, {}, 0. };
+        p.vertices.reserve(3);
+        for(int k = 0; k < 3; ++k)
+          p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
+        out.pieces.push_back(std::move(p));
+        continue;
+      }
       for(const Symbolic_piece& sp : m_cuts[f].pieces)
       {
         Partition::Piece p{ f, m_candidates[f][sp.candidate].site, {}, 0. };
