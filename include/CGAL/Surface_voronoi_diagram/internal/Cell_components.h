@@ -127,15 +127,23 @@ struct Cell_components
 };
 
 /// Pieces of one site are connected when they share a piece edge (a positive-length
-/// segment), except across a blocked mesh edge (a breakline).
+/// segment), except across a blocked mesh edge (a breakline). If `site_pairs` is given, it
+/// receives the sites of every two adjacent pieces of different sites (the same pass finds
+/// the cells' neighbours).
 template <class TriangleMesh, class Blocked_edge>
 Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition,
-                                std::size_t number_of_sites, const Blocked_edge& blocked_edge)
+                                std::size_t number_of_sites, const Blocked_edge& blocked_edge,
+                                std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr)
 {
   const std::size_t np = partition.pieces.size();
   Disjoint_sets pieces_of_a_cell(np);
+  if(site_pairs) site_pairs->clear();
   for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
-    if(partition.pieces[p].site != partition.pieces[q].site) return;
+    if(partition.pieces[p].site != partition.pieces[q].site)
+    {
+      if(site_pairs) site_pairs->emplace_back(partition.pieces[p].site, partition.pieces[q].site);
+      return;
+    }
     if(e != no_site && blocked_edge(e)) return;
     pieces_of_a_cell.unite(p, q);
   });

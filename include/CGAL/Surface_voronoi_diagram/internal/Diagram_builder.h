@@ -90,11 +90,12 @@ public:
     if(!progress(0.7)) return false;
 
     Cell_components components;
+    std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
     std::vector<std::size_t> dirty, touched;
     auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
     for(std::size_t round = 0;; ++round)
     {
-      components = cell_components(m_mesh, d.partition, n, blocked_edge);
+      components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs);
       const std::size_t broken = number_of_broken_cells(components);
       if(round == 0) d.statistics.broken_cells_before_repair = broken;
       d.statistics.broken_cells = broken;
@@ -109,7 +110,7 @@ public:
       if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
     }
     d.candidates = std::move(propagation.candidates);
-    summarize(components);
+    summarize(components, site_pairs);
     m_timer.stop("repair");
     return progress(1.);
   }
@@ -151,7 +152,7 @@ private:
     }
   }
 
-  void summarize(const Cell_components& components)
+  void summarize(const Cell_components& components, const std::vector<std::pair<std::size_t, std::size_t> >& site_pairs)
   {
     Diagram_data<TriangleMesh>& d = m_data;
     Diagram_statistics& s = d.statistics;
@@ -204,10 +205,11 @@ private:
 
     // neighbours: sites on both sides of a piece edge
     d.neighbors.assign(n, std::vector<std::size_t>());
-    for_each_piece_adjacency(m_mesh, d.partition, [&](std::size_t p, std::size_t q, std::size_t) {
-      const std::size_t a = d.partition.pieces[p].site, b = d.partition.pieces[q].site;
-      if(a != b && a != no_site && b != no_site) { d.neighbors[a].push_back(b); d.neighbors[b].push_back(a); }
-    });
+    for(const std::pair<std::size_t, std::size_t>& ab : site_pairs)
+    {
+      const std::size_t a = ab.first, b = ab.second;
+      if(a != no_site && b != no_site) { d.neighbors[a].push_back(b); d.neighbors[b].push_back(a); }
+    }
     for(std::vector<std::size_t>& list : d.neighbors)
     {
       std::sort(list.begin(), list.end());

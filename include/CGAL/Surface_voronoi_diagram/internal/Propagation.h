@@ -115,13 +115,14 @@ public:
   }
 
 private:
-  // Small, so that the heap moves little memory: the field values are computed again when
-  // the event is taken (the same computation, the same bits).
+  // Small, so that the heap moves little memory: the field values wait in a slot of
+  // `m_values` (computed once: a lazy metric's values can be expensive), recycled when taken.
   struct Event
   {
     double key;
     std::uint32_t site;
     std::uint32_t face;
+    std::uint32_t slot;
   };
   // The sites offered to a face in its current epoch: the first few inline (a face is
   // offered a handful), the others in a hash table keyed by (site, face, epoch).
@@ -174,7 +175,19 @@ private:
     // lists only grow: a field dominated now stays dominated, so do not queue it
     for(const Candidate& b : candidates[f])
       if(dominates(b, x)) { ++statistics.pruned; return; }
-    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f) });
+    std::uint32_t slot;
+    if(m_free_slots.empty())
+    {
+      slot = static_cast<std::uint32_t>(m_values.size());
+      m_values.push_back(x.value);
+    }
+    else
+    {
+      slot = m_free_slots.back();
+      m_free_slots.pop_back();
+      m_values[slot] = x.value;
+    }
+    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f), slot });
   }
 
   template <class Banned>
@@ -185,7 +198,8 @@ private:
       const Event e = m_queue.top();
       m_queue.pop();
       ++statistics.events;
-      const Candidate x = { e.site, field_values(e.site, e.face) };
+      const Candidate x = { e.site, m_values[e.slot] };
+      m_free_slots.push_back(e.slot);
       std::vector<Candidate>& list = candidates[e.face];
       bool pruned = false;
       for(const Candidate& b : list)
@@ -213,6 +227,8 @@ private:
   Blocked m_blocked;
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;
+  std::vector<std::array<double, 3> > m_values;
+  std::vector<std::uint32_t> m_free_slots;
   Flat_hash_table<Key_slot<std::uint64_t> > m_offered;
   std::priority_queue<Event, std::vector<Event>, Later> m_queue;
 };
