@@ -1268,7 +1268,16 @@ TEST_CASE("program: --stats prints every required key with a numeric value", "[p
       if(line.find(": ") == std::string::npos || line.find(": ") == 0)
         ++malformed;
     CHECK(malformed == 0);
+    CHECK(stat_value(stats, "lloyd") == 0);
   }
+  // with --lloyd K: the seconds of the relaxation and the energy after each of the K + 1 diagrams
+  const Run r = run_program(dir, { (dir / "sphere.ply").string(), "--random", "15", "--metric", "euclidean",
+                                   "--lloyd", "2", "--stats" });
+  check_success(r);
+  const auto stats = parse_stats(r.out);
+  CHECK(stat_value(stats, "lloyd") > 0);
+  CHECK(stat_value(stats, "lloyd_energy_2") >= 0);
+  CHECK(stat_value(stats, "lloyd_energy_2") <= stat_value(stats, "lloyd_energy_0"));
 }
 
 TEST_CASE("program: --sites-out round trip reproduces the diagram byte for byte", "[program]")

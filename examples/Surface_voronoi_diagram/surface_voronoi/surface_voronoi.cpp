@@ -589,8 +589,10 @@ int run_main(int argc, char** argv)
   // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
   // with --insert-sites the relaxed sites are inserted afterwards
   std::vector<double> lloyd_energies;
+  double lloyd_seconds = 0;   // every iteration, with the metric they share
   if(args.lloyd > 0)
   {
+    const auto lloyd_start = Clock::now();
     try
     {
       auto relax = [&](auto& metric) {
@@ -615,9 +617,8 @@ int run_main(int argc, char** argv)
       }
       lloyd_energies = r.energies;
       for(std::size_t i = 0; i < r.sites.size(); ++i)
-      {
         locations[i] = canonical_location(r.sites[i], mesh, site_points[i]);
-      }
+      lloyd_seconds = std::chrono::duration<double>(Clock::now() - lloyd_start).count();
     }
     catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
     catch(const SV::Numerical_error& e) { fail(3, e.what()); }
@@ -714,6 +715,8 @@ int run_main(int argc, char** argv)
   catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
   catch(const SV::Numerical_error& e) { fail(3, e.what()); }
 
+  if(args.stats)
+    std::cout << "lloyd: " << lloyd_seconds << "\n";
   if(args.stats)
     for(std::size_t k = 0; k < lloyd_energies.size(); ++k)
       std::cout << "lloyd_energy_" << k << ": " << std::ldexp(lloyd_energies[k], 4 * args.scale) << "\n";   // area x squared length
