@@ -31,7 +31,6 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -122,10 +121,10 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
   std::vector<std::size_t> site_of_face;
   std::vector<face_descriptor> created;
   created.reserve(partition.pieces.size());
+  std::vector<vertex_descriptor> polygon;
   for(const auto& piece : partition.pieces)
   {
-    std::vector<vertex_descriptor> polygon;
-    polygon.reserve(piece.vertices.size());
+    polygon.clear();
     for(std::size_t id : piece.vertices)
     {
       if(vmap[id] == GT::null_vertex())
@@ -146,7 +145,10 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
     site_of_face.push_back(piece.site);
   }
 
-  // bisectors and Voronoi vertices from the labels around them
+  // bisectors and Voronoi vertices from the labels around them, if asked for
+  const bool want_edges = !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value;
+  const bool want_vertices = !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_is_constrained_t>::value;
+  if(!want_edges && !want_vertices) return;
   // 1 + index into `created`; 0 for faces that were in `out` before
   auto index_of = get(CGAL::dynamic_face_property_t<std::size_t>(), out);
   for(face_descriptor f : faces(out)) put(index_of, f, 0);
@@ -170,6 +172,7 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
     const std::size_t a = get(partition_id, source(h, out)), b = get(partition_id, target(h, out));
     return a > 0 && b > 0 && data.breaklines.joins(*data.mesh, partition, a - 1, b - 1);
   };
+  if(want_edges)
   for(face_descriptor f : created)
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, out), out))
     {
@@ -181,13 +184,16 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
       else
         put(edge_bisector, edge(h, out), false);
     }
+  std::vector<std::size_t> labels;
+  if(want_vertices)
   for(vertex_descriptor v : vmap)
   {
     if(v == GT::null_vertex()) continue;
-    std::set<std::size_t> labels;
+    labels.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_target(v, out))
-      labels.insert(label(h));
-    put(vertex_voronoi, v, labels.size() >= 3);
+      labels.push_back(label(h));
+    std::sort(labels.begin(), labels.end());
+    put(vertex_voronoi, v, std::unique(labels.begin(), labels.end()) - labels.begin() >= 3);
   }
 }
 
