@@ -2062,6 +2062,11 @@ TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 nam
     CHECK(r.err.find("cap") != std::string::npos);
     CHECK(r.err.find("--no-refine") != std::string::npos);
     CHECK(r.err.find("fewer sites") != std::string::npos);
+    // the cap bounds the vertices added to the input's (a cap on the total would forbid any
+    // refinement of a mesh of over a million vertices): 4 + 256 x (4 + sites)
+    const std::string cap = "cap of " + std::to_string(4 + 256 * (4 + std::stoul(n))) + " vertices";
+    INFO("expected '" << cap << "' in: " << r.err);
+    CHECK(r.err.find(cap) != std::string::npos);
   }
   check_success(run_program(dir, { (dir / "strip.off").string(), "--random", "10", "--metric", "geodesic", "--no-refine" }));
 }

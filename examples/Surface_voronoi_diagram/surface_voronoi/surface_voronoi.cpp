@@ -651,15 +651,17 @@ int run_main(int argc, char** argv)
       {
         // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
         const auto ti = Clock::now();
-        const std::size_t max_vertices = (std::min)(refinement_max_vertices,
+        // the cap bounds the vertices added, so that a mesh of over a million vertices can
+        // still be refined a little
+        const std::size_t max_vertices = num_vertices(mesh) + (std::min)(refinement_max_vertices,
             refinement_vertices_per_element * (num_vertices(mesh) + locations.size()));
         const SV::Refined_sites<Mesh> r = SV::refine_for_sites(mesh, locations, refined,
             SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(refined_input_face));
         if(r.vertex_limit_reached)
           fail(1, args.mesh + ": the refinement for the sites reached its cap of " + std::to_string(max_vertices)
-                  + " vertices (" + std::to_string(refinement_vertices_per_element) + " per input vertex and site, at most "
-                  + std::to_string(refinement_max_vertices) + "; thin faces need many): use --no-refine, "
-                    "--insert-sites or fewer sites");
+                  + " vertices (the input's and at most " + std::to_string(refinement_vertices_per_element)
+                  + " more per input vertex and site, at most " + std::to_string(refinement_max_vertices)
+                  + " more; thin faces need many): use --no-refine, --insert-sites or fewer sites");
         if(r.edges_split > 0)
         {
           work = &refined;
