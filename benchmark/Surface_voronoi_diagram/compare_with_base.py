@@ -184,20 +184,16 @@ def main():
                          compare(a.program, a.base_program, paths["boot"],
                                  ["--random", "3000", "--seed", "1", "--metric", metric, "--lloyd", "1"], repeat, a.work)))
         section("Lloyd", rows, ["compute", "embedding", "wall", "peak_mib"])
-    if "biharmonic" in sections:
+    for metric, title, keys in (("biharmonic", "Biharmonic", ["embedding", "compute", "load", "wall", "peak_mib"]),
+                                ("geodesic", "Geodesic", ["compute", "load", "wall", "peak_mib"])):
+        if metric not in sections:
+            continue
         rows = []
         for name in ["boot", "igea"] + ([] if a.quick else ["igea-537k"]):
-            rows.append(("%s, biharmonic d=10, 10k" % name,
-                         compare(a.program, a.base_program, paths[name], ["--random", "10000", "--seed", "1", "--metric", "biharmonic"],
+            rows.append(("%s, %s, 10k" % (name, "biharmonic d=10" if metric == "biharmonic" else metric),
+                         compare(a.program, a.base_program, paths[name], ["--random", "10000", "--seed", "1", "--metric", metric],
                                  1 if name == "igea-537k" else repeat, a.work)))
-        section("Biharmonic", rows, ["embedding", "compute", "load", "wall", "peak_mib"])
-    if "geodesic" in sections:
-        rows = []
-        for name in ["boot", "igea"] + ([] if a.quick else ["igea-537k"]):
-            rows.append(("%s, geodesic, 10k" % name,
-                         compare(a.program, a.base_program, paths[name], ["--random", "10000", "--seed", "1", "--metric", "geodesic"],
-                                 1 if name == "igea-537k" else repeat, a.work)))
-        section("Geodesic", rows, ["compute", "load", "wall", "peak_mib"])
+        section(title, rows, keys)
     report.append("load average after: %s" % " ".join("%.2f" % x for x in os.getloadavg()))
     if a.out:
         with open(a.out, "w") as f:

@@ -6,29 +6,14 @@ usage: subdivide_midpoint.py IN.off OUT.off [--times K]
 Each edge gets its midpoint; each triangle becomes four. Vertices keep their order, edge
 midpoints follow in order of first appearance, so the output is the same on every machine.
 """
+import os
 import sys
 
 
-def read_off(path):
-    with open(path) as f:
-        words = []
-        for line in f:
-            line = line.split('#', 1)[0]
-            words.extend(line.split())
-    if words[0] != 'OFF':
-        sys.exit(f'{path}: not an OFF file')
-    nv, nf = int(words[1]), int(words[2])
-    at = 4
-    points = [tuple(float(w) for w in words[at + 3 * i: at + 3 * i + 3]) for i in range(nv)]
-    at += 3 * nv
-    faces = []
-    for _ in range(nf):
-        n = int(words[at])
-        if n != 3:
-            sys.exit(f'{path}: a face of {n} corners; triangles only')
-        faces.append((int(words[at + 1]), int(words[at + 2]), int(words[at + 3])))
-        at += 1 + n
-    return points, faces
+# the regression matrix's OFF reader (the same grammar)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "test",
+                                "Surface_voronoi_diagram", "regression"))
+from run_matrix import read_off  # noqa: E402
 
 
 def subdivide(points, faces):
@@ -62,6 +47,8 @@ def main():
     if len(args) != 2:
         sys.exit(__doc__.strip().splitlines()[2])
     points, faces = read_off(args[0])
+    if any(len(f) != 3 for f in faces):
+        sys.exit(f'{args[0]}: a face that is not a triangle; triangles only')
     for _ in range(times):
         points, faces = subdivide(points, faces)
     with open(args[1], 'w') as f:

@@ -260,32 +260,20 @@ Location on_site_grid(Location l, const Mesh& mesh)
   else b[largest] = 1. - (b[(largest + 1) % 3] + b[(largest + 2) % 3]);
 
   // on an edge or at a vertex: the lowest-index face holding it, the same coordinates per vertex
-  const Mesh::Halfedge_index h0 = mesh.halfedge(l.first);
-  const Mesh::Vertex_index corner[3] = { mesh.source(h0), mesh.target(h0), mesh.target(mesh.next(h0)) };
+  const auto where = CGAL::Polygon_mesh_processing::get_descriptor_from_location(l, mesh);
   std::vector<Mesh::Face_index> holders;
-  const int zeros = int(std::count(b.begin(), b.end(), 0.));
-  if(zeros == 2)
+  if(const Mesh::Vertex_index* v = boost::get<Mesh::Vertex_index>(&where))
   {
-    for(Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(corner[largest]), mesh))
+    for(Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(*v), mesh))
       if(f != Mesh::null_face()) holders.push_back(f);
   }
-  else if(zeros == 1)
+  else if(const Mesh::Halfedge_index* h = boost::get<Mesh::Halfedge_index>(&where))
   {
-    const int z = int(std::find(b.begin(), b.end(), 0.) - b.begin());
-    const Mesh::Halfedge_index h = CGAL::halfedge(corner[(z + 1) % 3], corner[(z + 2) % 3], mesh).first;
-    for(Mesh::Halfedge_index side : { h, mesh.opposite(h) })
+    for(Mesh::Halfedge_index side : { *h, mesh.opposite(*h) })
       if(!mesh.is_border(side)) holders.push_back(mesh.face(side));
   }
   if(holders.empty()) return l;
-  const Mesh::Face_index c = *std::min_element(holders.begin(), holders.end());
-  if(c == l.first) return l;
-  Location moved(c, {{ 0., 0., 0. }});
-  const Mesh::Halfedge_index hc = mesh.halfedge(c);
-  const Mesh::Vertex_index in_c[3] = { mesh.source(hc), mesh.target(hc), mesh.target(mesh.next(hc)) };
-  for(int i = 0; i < 3; ++i)
-    for(int j = 0; j < 3; ++j)
-      if(corner[i] == in_c[j]) moved.second[j] = b[i];
-  return moved;
+  return CGAL::Polygon_mesh_processing::locate_in_adjacent_face(l, *std::min_element(holders.begin(), holders.end()), mesh);
 }
 
 // The site a location stands for (see above), and its point: what --sites-out writes. A

@@ -161,18 +161,11 @@ private:
       m_edge_crossings_begin[f] = m_edge_crossings.size();
       m_triple_begin = m_origins.size();
       m_face_degenerate[f] = m_cuts[f].degenerate;
-      if(m_candidates[f].empty())
+      // a face in one piece, its three corners in order: reached by nobody, or owned whole by
+      // its only candidate (as the cutter's one piece would be)
+      if(m_candidates[f].empty() || m_cuts[f].whole_face)
       {
-        Partition::Piece p{ f, no_site, {}, 0. };
-        for(int k = 0; k < 3; ++k)
-          p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
-        out.pieces.push_back(std::move(p));
-        continue;
-      }
-      if(m_cuts[f].whole_face)
-      {
-        // as the cutter's one piece would be: the three corners, in order
-        Partition::Piece p{ f, m_candidates[f][0].site, {}, 0. };
+        Partition::Piece p{ f, m_candidates[f].empty() ? no_site : m_candidates[f][0].site, {}, 0. };
         p.vertices.reserve(3);
         for(int k = 0; k < 3; ++k)
           p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
