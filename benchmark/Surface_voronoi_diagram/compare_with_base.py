@@ -188,12 +188,17 @@ def main():
                                 ("geodesic", "Geodesic", ["compute", "load", "wall", "peak_mib"])):
         if metric not in sections:
             continue
-        rows = []
+        rows, xs, ys_new, ys_old = [], [], [], []
         for name in ["boot", "igea"] + ([] if a.quick else ["igea-537k"]):
-            rows.append(("%s, %s, 10k" % (name, "biharmonic d=10" if metric == "biharmonic" else metric),
-                         compare(a.program, a.base_program, paths[name], ["--random", "10000", "--seed", "1", "--metric", metric],
-                                 1 if name == "igea-537k" else repeat, a.work)))
+            med = compare(a.program, a.base_program, paths[name], ["--random", "10000", "--seed", "1", "--metric", metric],
+                          1 if name == "igea-537k" else repeat, a.work)
+            rows.append(("%s, %s, 10k" % (name, "biharmonic d=10" if metric == "biharmonic" else metric), med))
+            xs.append(faces_of(paths[name]))
+            ys_new.append(med["new"].get("embedding", 0))
+            ys_old.append(med["old"].get("embedding", 0))
         section(title, rows, keys)
+        if metric == "biharmonic" and min(ys_new + ys_old) > 0:
+            report.append("slope of the embedding time against faces: new %.3f, old %.3f\n" % (slope(xs, ys_new), slope(xs, ys_old)))
     report.append("load average after: %s" % " ".join("%.2f" % x for x in os.getloadavg()))
     if a.out:
         with open(a.out, "w") as f:

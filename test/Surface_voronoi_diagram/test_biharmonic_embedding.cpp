@@ -4,9 +4,14 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
+#include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -164,3 +169,85 @@ TEST_CASE("embedding: a cap of height 1e-12 in a unit square keeps its zero eige
   const CGAL::Biharmonic_embedding<Mesh> embedding(m, SV::parameters::embedding_dimension(2));
   CHECK(embedding.dimension() == 2);
 }
+
+TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered LDLT within 1e-6", "[embedding][numerics]")
+{
+  // The default orders its Cholesky factorization by METIS nested dissection when CHOLMOD is
+  // there and looks for missed repeated eigenvalues with a looser check; the reference is
+  // Eigen's LDLT in its own AMD ordering. A bent torus has no symmetry, so its eigenvalues are
+  // simple and the embedded distances unique.
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 90, 36);
+  for(auto v : vertices(m))
+  {
+    const Point p = m.point(v);
+    m.point(v) = Point(p.x() * (1 + 0.3 * p.z()), 1.1 * p.y() + 0.1 * p.x() * p.x(), p.z());
+  }
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Reference_LA;
+  const CGAL::Biharmonic_embedding<Mesh> fast(m, SV::parameters::embedding_dimension(12));
+  const CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, Reference_LA> reference(m, SV::parameters::embedding_dimension(12));
+  const Eigen::VectorXd& a = fast.computed_eigenvalues();
+  const Eigen::VectorXd& b = reference.computed_eigenvalues();
+  REQUIRE(a.size() == b.size());
+  for(Eigen::Index k = 1; k < a.size(); ++k)
+  {
+    CHECK(a[k] == Approx(b[k]).epsilon(1e-6));
+    if(k + 1 < a.size())
+      REQUIRE(b[k + 1] > b[k] * (1 + 1e-3));   // simple: the distances below are unique
+  }
+  double largest = 0, worst = 0;
+  std::vector<Mesh::Vertex_index> vs(vertices(m).begin(), vertices(m).end());
+  for(std::size_t i = 0; i < vs.size(); i += 37)
+    for(std::size_t j = i + 11; j < vs.size(); j += 53)
+    {
+      const double d = reference.squared_distance(vs[i], vs[j]);
+      largest = (std::max)(largest, d);
+      worst = (std::max)(worst, std::abs(fast.squared_distance(vs[i], vs[j]) - d));
+    }
+  REQUIRE(largest > 0);
+  CHECK(worst <= 1e-6 * largest);
+}
+
+#ifdef CGAL_USE_CHOLMOD
+TEST_CASE("embedding: the nested-dissection ordering is a permutation with less fill than AMD", "[embedding][numerics]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 160, 64);
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  const Eigen::SparseMatrix<double> C = L + 1e-3 * M;
+  typedef SV::internal::Nested_dissection_ordering<int> Ordering;
+  Ordering::PermutationType perm;
+  REQUIRE(Ordering::metis(C, perm));
+  REQUIRE(perm.size() == C.rows());
+  std::vector<int> seen(static_cast<std::size_t>(C.rows()), 0);
+  for(Eigen::Index k = 0; k < perm.size(); ++k)
+  {
+    const int i = perm.indices()[k];
+    REQUIRE(i >= 0);
+    REQUIRE(i < C.rows());
+    ++seen[static_cast<std::size_t>(i)];
+  }
+  CHECK(std::count(seen.begin(), seen.end(), 1) == C.rows());
+  // factorized in that ordering: the permutation applied by hand, then no ordering
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> p = perm.inverse();
+  Eigen::SparseMatrix<double> permuted;
+  permuted = C.selfadjointView<Eigen::Lower>().twistedBy(p);
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> > nd(permuted);
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > amd(C);
+  REQUIRE(nd.info() == Eigen::Success);
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(C.rows(), -1, 1);
+  const Eigen::VectorXd y = p.inverse() * nd.solve(p * x);
+  CHECK((C * y - x).norm() <= 1e-10 * x.norm());
+  CHECK(nd.matrixL().nestedExpression().nonZeros() < amd.matrixL().nestedExpression().nonZeros());
+  // the same ordering every time (METIS's random numbers have a fixed seed)
+  Ordering::PermutationType again;
+  REQUIRE(Ordering::metis(C, again));
+  CHECK(again.indices() == perm.indices());
+  // below the size where it pays, the functor orders by AMD
+  Ordering::PermutationType small, reference;
+  Ordering()(C, small);
+  Eigen::AMDOrdering<int>()(C, reference);
+  CHECK(small.indices() == reference.indices());
+}
+#endif

@@ -89,7 +89,16 @@ Biharmonic_options
 ///         default: the mesh's internal `CGAL::vertex_point` map
 /// \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 /// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
-///         factorization; default: `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLDLT`
+///         factorization; default: `CGAL::Eigen_solver_traits` over Eigen's simplicial
+///         Cholesky factorization: `Eigen::SimplicialLLT` in a METIS nested-dissection
+///         ordering computed by SuiteSparse's CHOLMOD when the macro `CGAL_USE_CHOLMOD` is
+///         defined (the package's CMake target defines it and links `cholmod` when it finds
+///         SuiteSparse, from 100,000 vertices up; twice as fast on a 537k-vertex mesh), `Eigen::SimplicialLDLT` in
+///         Eigen's AMD ordering otherwise. Both give the same results on every machine and
+///         every run. `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
+///         is faster still, but its dense blocks go through the BLAS, whose rounding changes
+///         with the number of BLAS threads and the processor: its embeddings differ in their
+///         last bits from one machine, or one thread count, to another.
 ///
 /// \cgalModels `SurfaceVoronoiEmbedding`
 template <class TriangleMesh,
@@ -119,7 +128,7 @@ public:
   typedef typename Default::Get<GeomTraits,
             typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel>::type Geom_traits;
   /// the linear algebra traits: `LA`, or by default `CGAL::Eigen_solver_traits` over
-  /// `Eigen::SimplicialLDLT`
+  /// Eigen's simplicial Cholesky factorization (see the template parameter `LA`)
   typedef typename Default::Get<LA, Surface_voronoi::internal::Default_eigen_LA>::type Linear_algebra_traits;
   /// a point in a face: the face and barycentric coordinates
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;

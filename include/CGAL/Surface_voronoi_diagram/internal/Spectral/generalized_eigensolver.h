@@ -19,6 +19,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
 
 #include <CGAL/assertions.h>
 
@@ -34,6 +35,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -75,15 +77,22 @@ public:
     if(m_factorized && sigma == m_sigma)
       return;
     const Eigen::SparseMatrix<double> C = m_A - sigma * m_B;
-    m_matrix = typename LA::Matrix(static_cast<int>(C.rows()));
-    for(Eigen::Index col = 0; col < C.outerSize(); ++col)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it)
-        m_matrix.set_coef(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value(), true);
+    assign(C, std::is_constructible<typename LA::Matrix, const Eigen::SparseMatrix<double>&>());
     double denominator = 1;
     if(!m_la.factor(m_matrix, denominator))
       throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
     m_sigma = sigma;
     m_factorized = true;
+  }
+
+  // An Eigen-based model takes the matrix whole; any other model coefficient by coefficient.
+  void assign(const Eigen::SparseMatrix<double>& C, std::true_type) { m_matrix = typename LA::Matrix(C); }
+  void assign(const Eigen::SparseMatrix<double>& C, std::false_type)
+  {
+    m_matrix = typename LA::Matrix(static_cast<int>(C.rows()));
+    for(Eigen::Index col = 0; col < C.outerSize(); ++col)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(C, col); it; ++it)
+        m_matrix.set_coef(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value(), true);
   }
 
   void set_deflation(const Eigen::MatrixXd& vectors, const Eigen::VectorXd& eigenvalues)
@@ -122,8 +131,15 @@ private:
   Eigen::VectorXd m_deflation_weights;
 };
 
-/// The default linear algebra: Eigen's simplicial LDLT.
+/// The default linear algebra: Eigen's simplicial Cholesky factorization, ordered by METIS
+/// nested dissection when CHOLMOD is there (see nested_dissection_ordering.h for why not
+/// CHOLMOD's own factorization), else by Eigen's AMD.
+#ifdef CGAL_USE_CHOLMOD
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
+                                                       Nested_dissection_ordering<int> > > Default_eigen_LA;
+#else
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_eigen_LA;
+#endif
 
 struct Eigen_solve_result
 {
@@ -171,14 +187,14 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     // The first run asks for everything; later runs only check for missed eigenvalues
     // below the largest one kept, so a few suffice.
     const Eigen::Index found = vectors.cols();
-    Eigen::Index want = (round == 0) ? nev : (std::min<Eigen::Index>)(nev, 4);
-    want = (std::min<Eigen::Index>)(want, n - found - 1);
+    const Eigen::Index room = n - found - 1;
+    const Eigen::Index want = (std::min<Eigen::Index>)((round == 0) ? nev : (std::min<Eigen::Index>)(nev, 4), room);
     if(want < 1)
       break;
     op.set_deflation(vectors, values);
-    auto solve = [&](Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
+    auto solve = [&](Eigen::Index count, Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
       ncv = (std::min)(n, ncv);
-      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, want, ncv, sigma);
+      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, count, ncv, sigma);
       Eigen::Index converged = 0;
       try
       {
@@ -195,9 +211,9 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
       r.iterations += static_cast<long>(solver.num_iterations());
       r.operations += static_cast<long>(solver.num_operations());
       ++r.rounds;
-      if(solver.info() != Spectra::CompInfo::Successful || converged < want)
+      if(solver.info() != Spectra::CompInfo::Successful || converged < count)
         throw Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
-                              + std::to_string(want) + " eigenpairs after " + std::to_string(solver.num_iterations())
+                              + std::to_string(count) + " eigenpairs after " + std::to_string(solver.num_iterations())
                               + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
       new_values = solver.eigenvalues();
       new_vectors = solver.eigenvectors();
@@ -208,14 +224,18 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     Eigen::MatrixXd new_vectors;
     const Eigen::Index accurate_ncv = (std::max<Eigen::Index>)(4 * want, 40);
     if(round == 0)
-      solve(accurate_ncv, tolerance, new_values, new_vectors);
+      solve(want, accurate_ncv, tolerance, new_values, new_vectors);
     else
     {
-      // a cheap look for anything missed; solved accurately only if something shows up
-      solve((std::max<Eigen::Index>)(2 * want + 1, 16), (std::max)(tolerance, 1e-6), new_values, new_vectors);
+      // A cheap look for anything missed: the smallest eigenvalue of the deflated problem
+      // alone, to a loose tolerance (a Ritz value of the shift-inverted operator lies above
+      // the eigenvalue it converges to, so a value below the limit is never a false alarm).
+      // Only if one shows up are a few solved accurately. Looking for four at 1e-6, as
+      // before, cost as many operator applications as the first run.
+      solve(1, 16, (std::max)(tolerance, 1e-3), new_values, new_vectors);
       const double limit = values[(std::min)(nev, found) - 1];
       if((new_values.array() < limit * (1 - 1e-6)).any())
-        solve(accurate_ncv, tolerance, new_values, new_vectors);
+        solve(want, accurate_ncv, tolerance, new_values, new_vectors);
     }
 
     const double threshold = (found >= nev) ? values[nev - 1] : std::numeric_limits<double>::infinity();
