@@ -21,7 +21,7 @@ namespace {
 namespace SVI = CGAL::Surface_voronoi::internal;
 typedef CGAL::Exact_rational Fc_q;
 typedef std::array<Fc_q, 3> Fc_bary;   // barycentric coordinates in the face
-typedef std::vector<SVI::Candidate> Fc_list;
+typedef SVI::Candidate_list Fc_list;
 
 // The test triangle (0,0), (8,0), (0,8), counter-clockwise; fields are squared distances
 // to integer sites, so every value is an exact integer.

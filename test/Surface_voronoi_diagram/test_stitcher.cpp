@@ -72,7 +72,7 @@ struct St_run
   St_mesh surface;
   St_indexed mesh;
   std::vector<std::vector<double> > field;   // field[site][vertex]
-  std::vector<std::vector<SVI::Candidate> > candidates;
+  SVI::Candidate_lists candidates;
   std::vector<SVI::Face_cut> cuts;
   SVI::Partition part;
 };

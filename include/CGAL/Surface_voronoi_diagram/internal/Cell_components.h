@@ -42,7 +42,7 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
     return v.kind == Partition::ON_EDGE && v.element == e;
   };
   auto has_edge = [&](std::size_t q, std::size_t u, std::size_t w) {
-    const std::vector<std::size_t>& v = partition.pieces[q].vertices;
+    const Partition::Vertex_cycle& v = partition.pieces[q].vertices;
     for(std::size_t j = 0; j < v.size(); ++j)
       if(v[j] == u && v[(j + 1) % v.size()] == w) return true;
     return false;
@@ -74,7 +74,7 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
     }
     for(std::size_t p = partition.face_begin[f]; p < partition.face_begin[f + 1]; ++p)
     {
-      const std::vector<std::size_t>& v = partition.pieces[p].vertices;
+      const Partition::Vertex_cycle& v = partition.pieces[p].vertices;
       for(std::size_t j = 0; j < v.size(); ++j)
       {
         const std::size_t u = v[j], w = v[(j + 1) % v.size()];

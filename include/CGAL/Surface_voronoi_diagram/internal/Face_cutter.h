@@ -68,7 +68,7 @@ struct Face_cut
 class Face_cutter
 {
 public:
-  explicit Face_cutter(const std::vector<Candidate>& candidates) : m_candidates(candidates) {}
+  explicit Face_cutter(const Candidate_list& candidates) : m_candidates(candidates) {}
 
   /// sign of h_il = D_i - D_l at vertex `v` of the piece of candidate i
   int sign_at(const Symbolic_vertex& v, std::uint32_t i, std::uint32_t l) const
@@ -208,7 +208,7 @@ private:
     return true;
   }
 
-  const std::vector<Candidate>& m_candidates;
+  const Candidate_list& m_candidates;
   mutable std::vector<int> m_signs;
 };
 

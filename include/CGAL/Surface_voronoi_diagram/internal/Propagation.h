@@ -63,14 +63,14 @@ public:
   /// the first propagation, from every site
   void run()
   {
-    candidates.assign(m_mesh.number_of_faces(), std::vector<Candidate>());
+    candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     m_offers.assign(m_mesh.number_of_faces(), Offers());
     m_offered.reset(m_mesh.number_of_faces() / 8 + 16);
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       offer(static_cast<std::uint32_t>(i), m_site_faces[i]);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     drain(no_ban, nullptr);
-    for(std::vector<Candidate>& list : candidates) clean_candidate_list(list);
+    for(Candidate_list& list : candidates) clean_candidate_list(list);
   }
 
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
@@ -82,7 +82,7 @@ public:
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     for(std::size_t f : dirty)
     {
-      std::vector<Candidate>& list = candidates[f];
+      Candidate_list& list = candidates[f];
       list.erase(std::remove_if(list.begin(), list.end(), [&](const Candidate& x) { return banned(x.site, f); }),
                  list.end());
       CGAL_assertion(m_epoch[f] + 1 < max_epochs);
@@ -200,7 +200,7 @@ private:
       ++statistics.events;
       const Candidate x = { e.site, m_values[e.slot] };
       m_free_slots.push_back(e.slot);
-      std::vector<Candidate>& list = candidates[e.face];
+      Candidate_list& list = candidates[e.face];
       bool pruned = false;
       for(const Candidate& b : list)
         if(dominates(b, x)) { pruned = true; break; }

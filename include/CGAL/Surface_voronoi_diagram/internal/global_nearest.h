@@ -46,7 +46,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
 {
   const std::size_t nf = mesh.number_of_faces();
   const std::size_t d = fields.dimension();
-  candidates.assign(nf, std::vector<Candidate>());
+  candidates.assign(nf, Candidate_list());
 
   auto add = [&](std::size_t f, std::size_t site) {
     Candidate x;
@@ -119,7 +119,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
       for(std::size_t s = 0; s < number_of_sites; ++s) add(f, s);
   }
 
-  for(std::vector<Candidate>& list : candidates)
+  for(Candidate_list& list : candidates)
     clean_candidate_list(list);
 }
 

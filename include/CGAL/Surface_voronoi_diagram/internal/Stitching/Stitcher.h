@@ -489,7 +489,7 @@ private:
           break;
         }
       }
-      if(changed) p.vertices = refined;
+      if(changed) p.vertices.assign(refined.begin(), refined.end());
     }
   }
 
@@ -537,7 +537,7 @@ private:
       p.area = p.vertices.size() < 3 ? 0. : piece_area(p.vertices);
   }
 
-  double piece_area(const std::vector<std::size_t>& ids) const
+  double piece_area(const Partition::Vertex_cycle& ids) const
   {
     const Partition& out = *m_out;
     Vector_d s(0., 0., 0.);
@@ -547,7 +547,7 @@ private:
     return 0.5 * std::sqrt(s.squared_length());
   }
 
-  bool is_collinear_polygon(const std::vector<std::size_t>& ids) const
+  bool is_collinear_polygon(const Partition::Vertex_cycle& ids) const
   {
     typedef Exact_predicates_kernel::Point_3 P;
     auto point = [&](std::size_t id) {
