@@ -23,6 +23,8 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -49,11 +51,16 @@ struct Piece_edge_support
   std::uint32_t other;   // the other site (candidate index) otherwise
 };
 
+/// A clipped triangle has at most 3 + (candidates - 1) vertices, and most cut faces have two
+/// or three candidates: six are kept inline, so that cutting a face allocates one block (its
+/// pieces), not two per piece and three per clip.
 struct Symbolic_piece
 {
-  std::uint32_t candidate;                    // index into the face's candidate list
-  std::vector<Symbolic_vertex> vertices;         // counter-clockwise, as the face
-  std::vector<Piece_edge_support> supports;   // supports[n]: edge vertices[n] -> vertices[n+1]
+  typedef boost::container::small_vector<Symbolic_vertex, 6> Vertex_list;
+  typedef boost::container::small_vector<Piece_edge_support, 6> Support_list;
+  std::uint32_t candidate;    // index into the face's candidate list
+  Vertex_list vertices;       // counter-clockwise, as the face
+  Support_list supports;      // supports[n]: edge vertices[n] -> vertices[n+1]
 };
 
 struct Face_cut
@@ -108,17 +115,21 @@ public:
     if(n == 1)
     {
       // most faces: one candidate owns the whole triangle
-      Symbolic_piece piece;
+      result.pieces.resize(1);
+      Symbolic_piece& piece = result.pieces.back();
       piece.candidate = 0;
       piece.vertices = { Symbolic_vertex{ Symbolic_vertex::CORNER, 0, 0, 0 }, Symbolic_vertex{ Symbolic_vertex::CORNER, 1, 0, 0 },
                          Symbolic_vertex{ Symbolic_vertex::CORNER, 2, 0, 0 } };
       piece.supports = { Piece_edge_support{ true, 0, 0 }, Piece_edge_support{ true, 1, 0 }, Piece_edge_support{ true, 2, 0 } };
-      result.pieces.push_back(std::move(piece));
       return result;
     }
+    // Built in place: a piece holds its vertices inline, so moving one copies them. No
+    // reallocation moves them either, since there is at most one piece per candidate.
+    result.pieces.reserve(n);
     for(std::uint32_t i = 0; i < n; ++i)
     {
-      Symbolic_piece piece;
+      result.pieces.resize(result.pieces.size() + 1);
+      Symbolic_piece& piece = result.pieces.back();
       piece.candidate = i;
       for(std::uint8_t k = 0; k < 3; ++k)
       {
@@ -142,8 +153,8 @@ public:
           continue;   // l is above i on the whole face
         empty = !clip(piece, i, l, result.degenerate);
       }
-      if(!empty)
-        result.pieces.push_back(std::move(piece));
+      if(empty)
+        result.pieces.pop_back();
     }
     return result;
   }
@@ -169,8 +180,8 @@ private:
       return false;
 
     // origin of each output vertex: (index, is_crossing) -> crossing on edge index
-    std::vector<Symbolic_vertex> out_vertices;
-    std::vector<std::pair<std::size_t, bool> > origin;
+    Symbolic_piece::Vertex_list out_vertices;
+    boost::container::small_vector<std::pair<std::size_t, bool>, 8> origin;
     out_vertices.reserve(n + 1);
     origin.reserve(n + 1);
     for(std::size_t k = 0; k < n; ++k)
@@ -194,7 +205,7 @@ private:
     const std::size_t m = out_vertices.size();
     if(m < 3)
       return false;
-    std::vector<Piece_edge_support> out_supports(m);
+    Symbolic_piece::Support_list out_supports(m);
     for(std::size_t k = 0; k < m; ++k)
     {
       const std::pair<std::size_t, bool>& u = origin[k];
@@ -209,7 +220,7 @@ private:
   }
 
   const Candidate_list& m_candidates;
-  mutable std::vector<int> m_signs;
+  mutable boost::container::small_vector<int, 8> m_signs;
 };
 
 } // namespace internal
