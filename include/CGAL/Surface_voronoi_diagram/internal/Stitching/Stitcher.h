@@ -417,21 +417,29 @@ private:
   void insert_edge_points()
   {
     Partition& out = *m_out;
-    // the points of each edge, sorted by parameter, in one flat array
-    struct Edge_point { std::size_t edge; double t; std::size_t id; };
-    std::vector<Edge_point> edge_points;
+    // the points of each edge, sorted by parameter, in one flat array grouped by edge with a
+    // counting sort (a global sort and a binary search per piece edge were 13% of a Lloyd step)
+    struct Edge_point { double t; std::size_t id; };
+    const std::size_t ne = m_mesh.number_of_edges();
+    std::vector<std::size_t> edge_begin(ne + 1, 0);
     for(std::size_t id = 0; id < out.vertices.size(); ++id)
       if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
-        edge_points.push_back(Edge_point{ out.vertices[id].element, out.vertices[id].t, id });
-    std::sort(edge_points.begin(), edge_points.end(), [](const Edge_point& a, const Edge_point& b) {
-      return a.edge < b.edge || (a.edge == b.edge && (a.t < b.t || (a.t == b.t && a.id < b.id)));
-    });
-    std::vector<std::uint32_t> points_on_edge(m_mesh.number_of_edges(), 0);
-    for(const Edge_point& x : edge_points) ++points_on_edge[x.edge];
+        ++edge_begin[out.vertices[id].element + 1];
+    for(std::size_t e = 0; e < ne; ++e) edge_begin[e + 1] += edge_begin[e];
+    std::vector<Edge_point> edge_points(edge_begin[ne]);
+    {
+      std::vector<std::size_t> next(edge_begin.begin(), edge_begin.end() - 1);
+      for(std::size_t id = 0; id < out.vertices.size(); ++id)
+        if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
+          edge_points[next[out.vertices[id].element]++] = Edge_point{ out.vertices[id].t, id };
+    }
+    for(std::size_t e = 0; e < ne; ++e)
+      if(edge_begin[e + 1] - edge_begin[e] > 1)
+        std::sort(edge_points.begin() + edge_begin[e], edge_points.begin() + edge_begin[e + 1],
+                  [](const Edge_point& a, const Edge_point& b) { return a.t < b.t || (a.t == b.t && a.id < b.id); });
+    auto has_points = [&](std::size_t e) { return edge_begin[e + 1] > edge_begin[e]; };
     auto range_of = [&](std::size_t e) {
-      auto lo = std::lower_bound(edge_points.begin(), edge_points.end(), e,
-                                 [](const Edge_point& x, std::size_t edge) { return x.edge < edge; });
-      return std::make_pair(lo, lo + points_on_edge[e]);
+      return std::make_pair(edge_points.begin() + edge_begin[e], edge_points.begin() + edge_begin[e + 1]);
     };
     // the parameter of vertex `id` along mesh edge `e`, if it lies on it
     auto parameter_on = [&](std::size_t id, std::size_t e, double& t) {
@@ -466,7 +474,7 @@ private:
       const std::size_t f = p.face;
       // a piece whose face has no point on its edges has nothing to receive
       bool receives = false;
-      for(int le = 0; le < 3; ++le) receives |= points_on_edge[m_mesh.edges[f][le]] > 0;
+      for(int le = 0; le < 3; ++le) receives |= has_points(m_mesh.edges[f][le]);
       if(!receives) continue;
       const std::size_t n = p.vertices.size();
       bool changed = false;
@@ -478,7 +486,7 @@ private:
         for(int le = 0; le < 3; ++le)
         {
           const std::size_t e = m_mesh.edges[f][le];
-          if(points_on_edge[e] == 0) continue;
+          if(!has_points(e)) continue;
           if(!between(u, w, e, found)) continue;
           if(!found.empty())
           {
