@@ -89,13 +89,12 @@ Biharmonic_options
 ///         default: the mesh's internal `CGAL::vertex_point` map
 /// \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 /// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
-///         factorization; default: `CGAL::Eigen_solver_traits` over Eigen's simplicial
-///         Cholesky factorization: `Eigen::SimplicialLLT` in a METIS nested-dissection
-///         ordering computed by SuiteSparse's CHOLMOD when the macro `CGAL_USE_CHOLMOD` is
-///         defined (the package's CMake target defines it and links `cholmod` when it finds
-///         SuiteSparse, from 100,000 vertices up; twice as fast on a 537k-vertex mesh), `Eigen::SimplicialLDLT` in
-///         Eigen's AMD ordering otherwise. Both give the same results on every machine and
-///         every run. `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
+///         factorization; default: `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLLT`,
+///         in a METIS nested-dissection ordering computed by SuiteSparse's CHOLMOD from
+///         100,000 vertices up when the macro `CGAL_USE_CHOLMOD` is defined (the package's
+///         CMake target defines it and links `cholmod` when it finds SuiteSparse; twice as
+///         fast on a 537k-vertex mesh), in Eigen's AMD ordering otherwise. Both give the same
+///         results on every machine and every run. `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
 ///         is faster still, but its dense blocks go through the BLAS, whose rounding changes
 ///         with the number of BLAS threads and the processor: its embeddings differ in their
 ///         last bits from one machine, or one thread count, to another.

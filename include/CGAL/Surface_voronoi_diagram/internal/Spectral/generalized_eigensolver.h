@@ -131,14 +131,16 @@ private:
   Eigen::VectorXd m_deflation_weights;
 };
 
-/// The default linear algebra: Eigen's simplicial Cholesky factorization, ordered by METIS
-/// nested dissection when CHOLMOD is there (see nested_dissection_ordering.h for why not
-/// CHOLMOD's own factorization), else by Eigen's AMD.
+/// The default linear algebra: Eigen's simplicial LLT, ordered by METIS nested dissection when
+/// CHOLMOD is there (see nested_dissection_ordering.h for why not CHOLMOD's own
+/// factorization), else by Eigen's AMD. Below `Nested_dissection_ordering::smallest_size` both
+/// builds factorize in AMD order with the same code, so their embeddings are the same bits.
 #ifdef CGAL_USE_CHOLMOD
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
                                                        Nested_dissection_ordering<int> > > Default_eigen_LA;
 #else
-typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Default_eigen_LA;
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
+                                                       Eigen::AMDOrdering<int> > > Default_eigen_LA;
 #endif
 
 struct Eigen_solve_result
