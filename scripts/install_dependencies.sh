@@ -1,10 +1,11 @@
 #!/bin/sh
 # Installs, from Debian 12's packages, what the package needs and what is missing.
 # Required: the five of the design card, and python3 for the regression matrix. Optional
-# (detected at configure time): CGAL's data set, TBB, CHOLMOD + OpenBLAS, ccache, doxygen.
+# (detected at configure time): CGAL's data set, TBB, METIS, ccache, doxygen, and
+# CHOLMOD + OpenBLAS for the benchmark's third factorization.
 set -e
 required="cmake g++ make python3 libcgal-dev libeigen3-dev libspectra-dev libboost-graph-dev catch2"
-optional="ccache libcgal-demo libtbb-dev libsuitesparse-dev libopenblas0-pthread doxygen"
+optional="ccache libcgal-demo libtbb-dev libmetis-dev libsuitesparse-dev libopenblas0-pthread doxygen"
 missing=""
 for p in $required $optional; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -172,7 +172,7 @@ TEST_CASE("embedding: a cap of height 1e-12 in a unit square keeps its zero eige
 
 TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered LDLT within 1e-6", "[embedding][numerics]")
 {
-  // The default orders its Cholesky factorization by METIS nested dissection when CHOLMOD is
+  // The default orders its Cholesky factorization by METIS nested dissection when METIS is
   // there and looks for missed repeated eigenvalues with a looser check; the reference is
   // Eigen's LDLT in its own AMD ordering. A bent torus has no symmetry, so its eigenvalues are
   // simple and the embedded distances unique.
@@ -208,7 +208,7 @@ TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered 
   CHECK(worst <= 1e-6 * largest);
 }
 
-#ifdef CGAL_USE_CHOLMOD
+#ifdef CGAL_USE_METIS
 TEST_CASE("embedding: the nested-dissection ordering is a permutation with less fill than AMD", "[embedding][numerics]")
 {
   Mesh m;

@@ -90,9 +90,9 @@ Biharmonic_options
 /// \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 /// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
 ///         factorization; default: `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLLT`,
-///         in a METIS nested-dissection ordering computed by SuiteSparse's CHOLMOD from
-///         100,000 vertices up when the macro `CGAL_USE_CHOLMOD` is defined (the package's
-///         CMake target defines it and links `cholmod` when it finds SuiteSparse; twice as
+///         in a METIS nested-dissection ordering from 100,000 vertices up when the macro
+///         `CGAL_USE_METIS` is defined (the package's CMake target defines it and links
+///         `metis` when it finds Debian's libmetis-dev; twice as
 ///         fast on a 537k-vertex mesh), in Eigen's AMD ordering otherwise. Both give the same
 ///         results on every machine and every run. `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
 ///         is faster still, but its dense blocks go through the BLAS, whose rounding changes

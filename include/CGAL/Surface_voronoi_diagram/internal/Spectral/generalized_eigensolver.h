@@ -132,10 +132,10 @@ private:
 };
 
 /// The default linear algebra: Eigen's simplicial LLT, ordered by METIS nested dissection when
-/// CHOLMOD is there (see nested_dissection_ordering.h for why not CHOLMOD's own
-/// factorization), else by Eigen's AMD. Below `Nested_dissection_ordering::smallest_size` both
+/// METIS is there (see nested_dissection_ordering.h for why not CHOLMOD's factorization),
+/// else by Eigen's AMD. Below `Nested_dissection_ordering::smallest_size` both
 /// builds factorize in AMD order with the same code, so their embeddings are the same bits.
-#ifdef CGAL_USE_CHOLMOD
+#ifdef CGAL_USE_METIS
 typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
                                                        Nested_dissection_ordering<int> > > Default_eigen_LA;
 #else
@@ -295,7 +295,7 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
                                                    Eigen::Index max_iterations = 1000,
                                                    const std::function<bool()>& keep_going = std::function<bool()>())
 {
-#ifdef CGAL_USE_CHOLMOD
+#ifdef CGAL_USE_METIS
   typedef Nested_dissection_ordering<int> Ordering;
   typename Ordering::PermutationType order;   // order.indices()[k]: the k-th row eliminated
   if(std::is_same<LA, Default_eigen_LA>::value && L.rows() >= Ordering::smallest_size && Ordering::metis(L, order))
