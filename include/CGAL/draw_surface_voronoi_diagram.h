@@ -31,8 +31,8 @@ namespace CGAL {
 /// deprecated forwards to this one, for one release.
 /// \param diagram the diagram to draw
 /// \param title the title of the window
-template <class TriangleMesh, class Metric, class VertexPointMap, class GeomTraits>
-void draw(const Surface_voronoi_diagram<TriangleMesh, Metric, VertexPointMap, GeomTraits>& diagram,
+template <class TriangleMesh, class Metric, class VertexPointMap, class GeomTraits, class ConcurrencyTag>
+void draw(const Surface_voronoi_diagram<TriangleMesh, Metric, VertexPointMap, GeomTraits, ConcurrencyTag>& diagram,
           const char* title = "Surface Voronoi diagram");
 
 } // namespace CGAL

@@ -1457,6 +1457,29 @@ TEST_CASE("program: the same command twice gives byte-identical output", "[progr
   }
 }
 
+TEST_CASE("program: --threads 1 (sequential) and --threads 2 give byte-identical output", "[program][parallel]")
+{
+  // A mesh of several of the parallel loops' chunks (8192 faces each), with every metric.
+  Temp_dir dir;
+  write_mesh(dir / "sphere.off", octahedral_sphere(6));
+  for(const std::string metric : { "biharmonic", "euclidean", "geodesic" })
+  {
+    INFO("metric " << metric);
+    std::vector<std::string> plys, duals;
+    for(const std::string threads : { "1", "2" })
+    {
+      const Run r = run_program(dir, { (dir / "sphere.off").string(), "--random", "700", "--metric", metric,
+                                       "--lloyd", "1", "--threads", threads, "--output", (dir / (threads + ".ply")).string(),
+                                       "--dual", (dir / (threads + ".off")).string() });
+      check_success(r);
+      plys.push_back(read_bytes(dir / (threads + ".ply")));
+      duals.push_back(read_bytes(dir / (threads + ".off")));
+    }
+    CHECK(same_content(plys[0], plys[1], "the two PLY files"));
+    CHECK(duals[0] == duals[1]);
+  }
+}
+
 TEST_CASE("program: --random is reproducible for a seed and changes with the seed", "[program]")
 {
   Temp_dir dir;
@@ -1601,6 +1624,11 @@ TEST_CASE("program: command-line errors exit 2 with one line on stderr", "[progr
   SECTION("--dimension with the rvd metric")
   {
     check_one_line_error(run_program(dir, { mesh, "--random", "4", "--dimension", "5", "--metric", "rvd" }), 2);
+  }
+  SECTION("--threads 0, or not a number")
+  {
+    check_one_line_error(run_program(dir, { mesh, "--random", "4", "--threads", "0" }), 2);
+    check_one_line_error(run_program(dir, { mesh, "--random", "4", "--threads", "two" }), 2);
   }
   SECTION("unknown metric, named in the message")
   {

@@ -1,5 +1,5 @@
 // Tests of CGAL/Surface_voronoi_diagram.h: invariants on every metric and several meshes,
-// ties, determinism, thin walls, the RVD baseline against brute force, and bad input.
+// ties, determinism (also across threads), thin walls, the RVD baseline against brute force, and bad input.
 #include "test_support.h"
 
 #include <CGAL/Biharmonic_embedding.h>
@@ -10,6 +10,10 @@
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
 #include <map>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -122,6 +126,53 @@ TEST_CASE("diagram: the same run twice is bit-identical", "[diagram]")
   CGAL::Surface_voronoi_diagram<Mesh> a(m, e1, sites), b(m, e2, sites);
   CHECK(fingerprint(a) == fingerprint(b));
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on any number of threads", "[diagram][parallel]")
+{
+  // Meshes of several chunks (the parallel loops cut 4096 to 8192 faces or pieces at a time),
+  // with cells the repair must mend (the lampshade's thin wall, biharmonic) and with exact
+  // ties (a lattice of sites on a grid: Voronoi vertices on mesh vertices and edges).
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Biharmonic> Sequential;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Biharmonic, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Sequential_euclidean;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel_euclidean;
+  std::vector<Mesh> ms(3);
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 12000;
+  GEN::make_thin_lampshade(ms[0], lo);
+  GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
+  GEN::make_planar_grid(ms[2], 120, 100, 1.0, 0.8, 0., 0);
+  for(std::size_t k = 0; k < ms.size(); ++k)
+  {
+    INFO("mesh " << k << ", " << num_faces(ms[k]) << " faces");
+    REQUIRE(num_faces(ms[k]) > 2 * 8192);
+    std::vector<Mesh::Vertex_index> lattice;
+    for(Mesh::Vertex_index v : vertices(ms[k]))
+      if(std::size_t(v) % 97 == 0) lattice.push_back(v);
+    const auto random_sites = area_uniform_locations(ms[k], 900, 11);
+    Biharmonic metric(ms[k]);
+    Euclidean euclidean(ms[k]);
+    const Sequential a(ms[k], metric, random_sites);
+    const Sequential_euclidean e(ms[k], euclidean, lattice);
+    for(int threads : { 1, 2, 4 })
+    {
+      INFO(threads << " threads");
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+      const Parallel b(ms[k], metric, random_sites);
+      CHECK(fingerprint(a) == fingerprint(b));
+      CHECK(a.statistics().broken_cells_before_repair == b.statistics().broken_cells_before_repair);
+      CHECK(a.statistics().welded_vertices == b.statistics().welded_vertices);
+      CHECK(a.statistics().inserted_vertices == b.statistics().inserted_vertices);
+      for(std::size_t i = 0; i < random_sites.size(); ++i)
+        CHECK(a.neighbors(i) == b.neighbors(i));
+      const Parallel_euclidean f(ms[k], euclidean, lattice);
+      CHECK(fingerprint(e) == fingerprint(f));
+      CHECK(e.statistics().welded_vertices == f.statistics().welded_vertices);
+    }
+  }
+}
+#endif
 
 TEST_CASE("diagram: symmetric layouts with exact ties are consistent and deterministic", "[diagram][ties]")
 {

@@ -6,7 +6,7 @@
 //   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
 //                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K]
-//                   [--stats]
+//                   [--threads N] [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site, or when a power weight
 // empties some cells: a warning says so),
@@ -41,6 +41,11 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Random.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -51,6 +56,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -102,6 +108,7 @@ struct Arguments
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false, no_refine = false;
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
+  std::size_t threads = 0;   // 0: all cores
   double max_site_distance = 0.01;
   int scale = 0;   // the mesh is computed on scaled by 2^-scale (normalization_exponent())
 };
@@ -109,7 +116,7 @@ struct Arguments
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
   "                       [--dimension D] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--threads N] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -160,6 +167,7 @@ Arguments parse(int argc, char** argv)
     else if(arg == "--breaklines") a.breaklines = value();
     else if(arg == "--dual") a.dual = value();
     else if(arg == "--lloyd") a.lloyd = static_cast<std::size_t>(parse_integer(arg, value(), 0, 10000));
+    else if(arg == "--threads") a.threads = static_cast<std::size_t>(parse_integer(arg, value(), 1, 4096));
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
     else if(a.mesh.empty()) a.mesh = arg;
     else fail(2, "unexpected argument '" + arg + "' (only one mesh)");
@@ -383,7 +391,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
          const Diagram_choices& choices, double load, double embedding, double insertion,
          const std::vector<Point>& site_points)
 {
-  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
   SV::internal::Stage_times times;
   const Diagram vd = with_diagram_parameters(choices,
@@ -421,6 +429,12 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
 int run_main(int argc, char** argv)
 {
   Arguments args = parse(argc, argv);
+#ifdef CGAL_LINKED_WITH_TBB
+  // --threads 1 is the sequential run; the output does not depend on the number of threads
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(args.threads != 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, args.threads);
+#endif
   typedef std::chrono::steady_clock Clock;
   const auto t0 = Clock::now();
   Mesh mesh;
@@ -585,7 +599,7 @@ int run_main(int argc, char** argv)
     {
       auto relax = [&](auto& metric) {
         return with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd),
-                                       [&](const auto& np) { return SV::lloyd_relaxation(mesh, metric, locations, np); });
+                                       [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); });
       };
       SV::Lloyd_result<Mesh> r;
       if(args.metric == "biharmonic")

@@ -36,6 +36,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Default.h>
@@ -45,6 +46,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
 #include <cmath>
 #include <cstdint>
@@ -103,10 +105,17 @@ namespace CGAL {
 ///         the mesh's internal `CGAL::vertex_point` map
 /// \tparam GeomTraits a model of `Kernel` for the points the diagram returns; default: the
 ///         kernel of the point type of `VertexPointMap`
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+///         `CGAL::Parallel_if_available_tag`: with a parallel tag, and TBB linked (the macro
+///         `CGAL_LINKED_WITH_TBB`, which the package's CMake target defines when it finds
+///         TBB), cutting the faces, stitching the pieces and checking the cells run on all the
+///         threads TBB allows (limit them with `tbb::global_control`); the propagation stays
+///         sequential. The diagram is the same, bit for bit, with any number of threads.
 template <class TriangleMesh,
           class Metric = Biharmonic_embedding<TriangleMesh>,
           class VertexPointMap = Default,
-          class GeomTraits = Default>
+          class GeomTraits = Default,
+          class ConcurrencyTag = Sequential_tag>
 class Surface_voronoi_diagram
 {
   typedef Surface_voronoi::internal::Indexed_mesh<TriangleMesh> Indexed_mesh;
@@ -490,6 +499,7 @@ private:
     settings.max_repair_rounds = choose_parameter(get_parameter(np, SVnp::max_repair_rounds), std::size_t(100));
     CGAL_precondition_msg(settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
     settings.has_weights = has_weights;
+    settings.parallel = SVi::is_parallel<ConcurrencyTag>();
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }

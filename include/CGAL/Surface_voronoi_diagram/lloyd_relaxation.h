@@ -98,6 +98,8 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 /// kernel of the vertex point map), since it constructs the locations returned. The metric
 /// is built once by the caller: no embedding is computed again per iteration.
 ///
+/// \tparam ConcurrencyTag the concurrency tag of the diagrams built (see
+///         `Surface_voronoi_diagram`); default: `CGAL::Sequential_tag`
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam Metric a model of `SurfaceVoronoiEmbedding` or of `SurfaceVoronoiLazyMetric`
 /// \param tm the mesh
@@ -135,7 +137,7 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 ///
 /// \returns the relaxed sites, the energy after each iteration and what was kept in place
 /// \pre the preconditions of the diagram's constructor hold for `sites`
-template <class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Lloyd_result<TriangleMesh>
 lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
                  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites,
@@ -146,7 +148,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
   typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<Geom_traits, Primitive> > Tree;
-  typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits> Diagram;
+  typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits, ConcurrencyTag> Diagram;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
@@ -208,7 +210,7 @@ CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
 /// \deprecated Use `lloyd_relaxation(tm, metric, sites, np)`: the number of iterations is the
 /// named parameter `number_of_iterations`, and the options of the diagram are its named
 /// parameters (see `Surface_voronoi::Diagram_options`).
-template <class TriangleMesh, class Metric>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Metric>
 CGAL_DEPRECATED_MSG("use the named parameters number_of_iterations and those of the diagram")
 Lloyd_result<TriangleMesh>
 lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
@@ -220,8 +222,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
                   SVp::max_repair_rounds(options.max_repair_rounds, SVp::max_site_distance(options.max_site_distance,
                   CGAL::parameters::number_of_iterations(iterations)))));
   if(options.weights.empty())
-    return lloyd_relaxation(tm, metric, std::move(sites), np);
-  return lloyd_relaxation(tm, metric, std::move(sites), SVp::site_weight_map(CGAL::make_property_map(options.weights), np));
+    return lloyd_relaxation<ConcurrencyTag>(tm, metric, std::move(sites), np);
+  return lloyd_relaxation<ConcurrencyTag>(tm, metric, std::move(sites), SVp::site_weight_map(CGAL::make_property_map(options.weights), np));
 }
 CGAL_SURFACE_VORONOI_DEPRECATED_END
 

@@ -21,6 +21,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -30,11 +31,13 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-/// Calls `adjacent(p, q, e)` once for every pair of pieces sharing a piece edge, where `e`
-/// is the mesh edge the shared edge lies on, or `no_site` inside a face. Pieces only meet
-/// within a face or across one of its edges, so the search stays local.
+/// Calls `adjacent(p, q, e)` once for every pair of pieces sharing a piece edge with p < q
+/// and p in a face of [first_face, last_face), where `e` is the mesh edge the shared edge
+/// lies on, or `no_site` inside a face. Pieces only meet within a face or across one of its
+/// edges, so the search stays local.
 template <class TriangleMesh, class Callback>
-void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, Callback adjacent)
+void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition,
+                              std::size_t first_face, std::size_t last_face, Callback adjacent)
 {
   auto on_edge = [&](std::size_t id, std::size_t e) {
     const Partition::Vertex& v = partition.vertices[id];
@@ -47,9 +50,8 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
       if(v[j] == u && v[(j + 1) % v.size()] == w) return true;
     return false;
   };
-  const std::size_t nf = mesh.number_of_faces();
   auto is_whole_face = [&](std::size_t g) { return partition.face_begin[g + 1] == partition.face_begin[g] + 1; };
-  for(std::size_t f = 0; f < nf; ++f)
+  for(std::size_t f = first_face; f < last_face; ++f)
   {
     // A face in one piece (most faces, when sites are fewer than faces) meets a neighbour in
     // one piece along the whole edge: no search through the pieces' vertices.
@@ -118,6 +120,12 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
   }
 }
 
+template <class TriangleMesh, class Callback>
+void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, Callback adjacent)
+{
+  for_each_piece_adjacency(mesh, partition, 0, mesh.number_of_faces(), adjacent);
+}
+
 struct Cell_components
 {
   std::vector<std::size_t> piece_component;            // component id of each piece
@@ -129,24 +137,57 @@ struct Cell_components
 /// Pieces of one site are connected when they share a piece edge (a positive-length
 /// segment), except across a blocked mesh edge (a breakline). If `site_pairs` is given, it
 /// receives the sites of every two adjacent pieces of different sites (the same pass finds
-/// the cells' neighbours).
+/// the cells' neighbours). With `parallel`, the faces are searched in concurrent chunks whose
+/// findings are merged in chunk order: the same components, numbered alike, and the same
+/// pairs in the same order (a union's representative is the set's smallest piece, whatever
+/// the order of the unions).
 template <class TriangleMesh, class Blocked_edge>
 Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition,
                                 std::size_t number_of_sites, const Blocked_edge& blocked_edge,
-                                std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr)
+                                std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr,
+                                bool parallel = false)
 {
   const std::size_t np = partition.pieces.size();
   Disjoint_sets pieces_of_a_cell(np);
   if(site_pairs) site_pairs->clear();
-  for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
+  auto classify = [&](std::size_t p, std::size_t q, std::size_t e, auto&& unite, auto&& neighbours) {
     if(partition.pieces[p].site != partition.pieces[q].site)
     {
-      if(site_pairs) site_pairs->emplace_back(partition.pieces[p].site, partition.pieces[q].site);
+      if(site_pairs) neighbours(partition.pieces[p].site, partition.pieces[q].site);
       return;
     }
     if(e != no_site && blocked_edge(e)) return;
-    pieces_of_a_cell.unite(p, q);
-  });
+    unite(p, q);
+  };
+  if(!parallel)
+  {
+    for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
+      classify(p, q, e, [&](std::size_t a, std::size_t b) { pieces_of_a_cell.unite(a, b); },
+               [&](std::size_t a, std::size_t b) { site_pairs->emplace_back(a, b); });
+    });
+  }
+  else
+  {
+    struct Found
+    {
+      std::vector<std::pair<std::size_t, std::size_t> > unions, neighbours;
+    };
+    const std::size_t nf = mesh.number_of_faces(), chunk = 8192;
+    std::vector<Found> found(number_of_chunks(nf, chunk));
+    for_each_chunk(nf, chunk, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      Found& out = found[c];
+      for_each_piece_adjacency(mesh, partition, begin, end, [&](std::size_t p, std::size_t q, std::size_t e) {
+        classify(p, q, e, [&](std::size_t a, std::size_t b) { out.unions.emplace_back(a, b); },
+                 [&](std::size_t a, std::size_t b) { out.neighbours.emplace_back(a, b); });
+      });
+    });
+    for(Found& f : found)
+    {
+      for(const auto& ab : f.unions) pieces_of_a_cell.unite(ab.first, ab.second);
+      if(site_pairs) site_pairs->insert(site_pairs->end(), f.neighbours.begin(), f.neighbours.end());
+      f = Found();
+    }
+  }
 
   Cell_components cc;
   cc.piece_component.assign(np, 0);

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
 #include <CGAL/Surface_voronoi_diagram/internal/global_nearest.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
 
 #include <CGAL/assertions.h>
@@ -44,6 +45,7 @@ struct Builder_settings
   bool repair = true;
   std::size_t max_repair_rounds = 100;
   bool has_weights = false;
+  bool parallel = false;   // cutting, stitching and checking in concurrent chunks (TBB)
 };
 
 template <class TriangleMesh, class Fields>
@@ -83,7 +85,7 @@ public:
 
     m_cuts.assign(m_mesh.number_of_faces(), Face_cut());
     cut_faces(propagation.candidates, nullptr);
-    stitch(m_mesh, propagation.candidates, m_cuts, d.partition);
+    stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
     d.statistics.propagation_events = propagation.statistics.events;
     d.statistics.admitted_fields = propagation.statistics.admitted;
     m_timer.stop("cutting");
@@ -95,7 +97,7 @@ public:
     auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
     for(std::size_t round = 0;; ++round)
     {
-      components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs);
+      components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs, m_settings.parallel);
       const std::size_t broken = number_of_broken_cells(components);
       if(round == 0) d.statistics.broken_cells_before_repair = broken;
       d.statistics.broken_cells = broken;
@@ -104,7 +106,7 @@ public:
       ban_orphan_pieces(d.sites, d.partition, components, banned, dirty);
       propagation.repropagate(dirty, is_banned, touched);
       cut_faces(propagation.candidates, &touched);
-      stitch(m_mesh, propagation.candidates, m_cuts, d.partition);
+      stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
       d.statistics.repair_rounds = round + 1;
       d.statistics.banned_fields = banned.size();
       if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
@@ -139,8 +141,7 @@ private:
   void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
   {
     const std::size_t count = which ? which->size() : m_cuts.size();
-    for(std::size_t k = 0; k < count; ++k)
-    {
+    parallel_for_each_index(count, m_settings.parallel, [&](std::size_t k) {
       const std::size_t f = which ? (*which)[k] : k;
       if(candidates[f].size() == 1)
       {
@@ -149,7 +150,7 @@ private:
       }
       else
         m_cuts[f] = candidates[f].empty() ? Face_cut() : Face_cutter(candidates[f]).cut();
-    }
+    });
   }
 
   void summarize(const Cell_components& components, const std::vector<std::pair<std::size_t, std::size_t> >& site_pairs)

@@ -29,6 +29,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Vertex_key.h>
 
 #include <algorithm>
@@ -50,8 +51,10 @@ class Stitcher
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts)
-    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts)
+  /// With `parallel`, the steps that work vertex by vertex, piece by piece or face by face
+  /// run in concurrent chunks; naming the vertices (ids in face order) stays sequential.
+  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts, bool parallel = false)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_parallel(parallel)
   {}
 
   /// Builds the partition from the candidate lists and the per-face cuts.
@@ -192,8 +195,7 @@ private:
   {
     Partition& out = *m_out;
     out.vertices.resize(m_origins.size());
-    for(std::size_t id = 0; id < m_origins.size(); ++id)
-    {
+    parallel_for_each_index(m_origins.size(), m_parallel, [&](std::size_t id) {
       const Vertex_key& k = m_origins[id].key;
       const std::size_t f = m_origins[id].face;
       if(k.kind == Vertex_key::MESH_VERTEX)
@@ -236,7 +238,7 @@ private:
         for(double& x : b) x /= s2;
         out.vertices[id] = Partition::Vertex{ m_mesh.point_at(f, b), Partition::IN_FACE, f, 0. };
       }
-    }
+    });
     m_representative.resize(m_origins.size());
     for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
   }
@@ -468,37 +470,43 @@ private:
       if(tu > tw) std::reverse(found.begin(), found.end());
       return true;
     };
-    std::vector<std::size_t> found, refined;
-    for(Partition::Piece& p : out.pieces)
-    {
-      const std::size_t f = p.face;
-      // a piece whose face has no point on its edges has nothing to receive
-      bool receives = false;
-      for(int le = 0; le < 3; ++le) receives |= has_points(m_mesh.edges[f][le]);
-      if(!receives) continue;
-      const std::size_t n = p.vertices.size();
-      bool changed = false;
-      refined.clear();
-      for(std::size_t k = 0; k < n; ++k)
+    const std::size_t chunk = 8192;
+    std::vector<std::size_t> inserted(number_of_chunks(out.pieces.size(), chunk), 0);
+    for_each_chunk(out.pieces.size(), chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      std::vector<std::size_t> found, refined;
+      for(std::size_t piece = begin; piece < end; ++piece)
       {
-        const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % n];
-        refined.push_back(u);
-        for(int le = 0; le < 3; ++le)
+        Partition::Piece& p = out.pieces[piece];
+        const std::size_t f = p.face;
+        // a piece whose face has no point on its edges has nothing to receive
+        bool receives = false;
+        for(int le = 0; le < 3; ++le) receives |= has_points(m_mesh.edges[f][le]);
+        if(!receives) continue;
+        const std::size_t n = p.vertices.size();
+        bool changed = false;
+        refined.clear();
+        for(std::size_t k = 0; k < n; ++k)
         {
-          const std::size_t e = m_mesh.edges[f][le];
-          if(!has_points(e)) continue;
-          if(!between(u, w, e, found)) continue;
-          if(!found.empty())
+          const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % n];
+          refined.push_back(u);
+          for(int le = 0; le < 3; ++le)
           {
-            refined.insert(refined.end(), found.begin(), found.end());
-            out.inserted_vertices += found.size();
-            changed = true;
+            const std::size_t e = m_mesh.edges[f][le];
+            if(!has_points(e)) continue;
+            if(!between(u, w, e, found)) continue;
+            if(!found.empty())
+            {
+              refined.insert(refined.end(), found.begin(), found.end());
+              inserted[c] += found.size();
+              changed = true;
+            }
+            break;
           }
-          break;
         }
+        if(changed) p.vertices.assign(refined.begin(), refined.end());
       }
-      if(changed) p.vertices.assign(refined.begin(), refined.end());
-    }
+    });
+    for(std::size_t n : inserted) out.inserted_vertices += n;
   }
 
   // Step 5: features smaller than double precision. Vertices whose computed positions are
@@ -509,28 +517,35 @@ private:
     Partition& out = *m_out;
     Disjoint_sets welded(out.vertices.size());
     bool any = false;
-    std::vector<std::size_t> used;
-    const std::size_t nf = out.face_begin.size() - 1;
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      used.clear();
-      for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
-        used.insert(used.end(), out.pieces[p].vertices.begin(), out.pieces[p].vertices.end());
-      std::sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
-        return out.vertices[a].point < out.vertices[b].point || (out.vertices[a].point == out.vertices[b].point && a < b);
-      });
-      for(std::size_t k = 1; k < used.size(); ++k)
-        if(used[k] != used[k - 1] && out.vertices[used[k]].point == out.vertices[used[k - 1]].point)
-        {
-          const std::size_t a = welded.find(used[k - 1]), b = welded.find(used[k]);
-          if(a == b) continue;
-          // a corner before an edge point before a face point
-          const bool a_first = out.vertices[a].kind < out.vertices[b].kind
-                               || (out.vertices[a].kind == out.vertices[b].kind && a < b);
-          if(a_first) welded.link(b, a); else welded.link(a, b);
-          any = true;
-        }
-    }
+    // the coincident pairs, found face by face (in chunks), then welded in face order
+    const std::size_t nf = out.face_begin.size() - 1, chunk = 8192;
+    std::vector<std::vector<std::pair<std::size_t, std::size_t> > > coincident(number_of_chunks(nf, chunk));
+    for_each_chunk(nf, chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      std::vector<std::size_t> used;
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        used.clear();
+        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+          used.insert(used.end(), out.pieces[p].vertices.begin(), out.pieces[p].vertices.end());
+        std::sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
+          return out.vertices[a].point < out.vertices[b].point || (out.vertices[a].point == out.vertices[b].point && a < b);
+        });
+        for(std::size_t k = 1; k < used.size(); ++k)
+          if(used[k] != used[k - 1] && out.vertices[used[k]].point == out.vertices[used[k - 1]].point)
+            coincident[c].emplace_back(used[k - 1], used[k]);
+      }
+    });
+    for(const auto& pairs : coincident)
+      for(const auto& pair : pairs)
+      {
+        const std::size_t a = welded.find(pair.first), b = welded.find(pair.second);
+        if(a == b) continue;
+        // a corner before an edge point before a face point
+        const bool a_first = out.vertices[a].kind < out.vertices[b].kind
+                             || (out.vertices[a].kind == out.vertices[b].kind && a < b);
+        if(a_first) welded.link(b, a); else welded.link(a, b);
+        any = true;
+      }
     if(any)
     {
       for(std::size_t id = 0; id < welded.size(); ++id)
@@ -541,8 +556,10 @@ private:
         remove_cyclic_repeats(p.vertices);
       }
     }
-    for(Partition::Piece& p : out.pieces)
+    parallel_for_each_index(out.pieces.size(), m_parallel, [&](std::size_t k) {
+      Partition::Piece& p = out.pieces[k];
       p.area = p.vertices.size() < 3 ? 0. : piece_area(p.vertices);
+    });
   }
 
   double piece_area(const Partition::Vertex_cycle& ids) const
@@ -648,6 +665,7 @@ private:
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
   const std::vector<Face_cut>& m_cuts;
+  bool m_parallel;
   Partition* m_out = nullptr;
   std::vector<Origin> m_origins;                      // by vertex id
   std::vector<std::size_t> m_corner_id;               // by mesh vertex
@@ -661,9 +679,9 @@ private:
 /// Builds the partition from the candidate lists and the per-face cuts.
 template <class TriangleMesh>
 void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
-            const std::vector<Face_cut>& cuts, Partition& out)
+            const std::vector<Face_cut>& cuts, Partition& out, bool parallel = false)
 {
-  Stitcher<TriangleMesh>(mesh, candidates, cuts).run(out);
+  Stitcher<TriangleMesh>(mesh, candidates, cuts, parallel).run(out);
 }
 
 } // namespace internal

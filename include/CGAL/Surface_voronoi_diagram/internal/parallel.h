@@ -1,0 +1,85 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Loops over fixed-size chunks, run by TBB when the diagram's concurrency tag asks for it.
+// The chunks do not depend on the number of threads, and whatever a chunk gathers is merged
+// in chunk order afterwards, so a parallel run computes the same bits as a sequential one.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARALLEL_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARALLEL_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/tags.h>
+#include <CGAL/use.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// Whether `ConcurrencyTag` asks for threads; `Parallel_tag` without TBB is a compile error,
+/// as in CGAL's other packages.
+template <class ConcurrencyTag>
+constexpr bool is_parallel()
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable (link CGAL::TBB_support, or use Parallel_if_available_tag)");
+#endif
+  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+}
+
+/// Calls `f(begin, end, chunk)` for the chunks [chunk * size, (chunk + 1) * size) of [0, n):
+/// in order when `parallel` is false or TBB is absent, concurrently otherwise.
+template <class Function>
+void for_each_chunk(std::size_t n, std::size_t size, bool parallel, const Function& f)
+{
+  const std::size_t chunks = (n + size - 1) / size;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel && chunks > 1)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t c = r.begin(); c != r.end(); ++c) f(c * size, (std::min)(n, (c + 1) * size), c);
+    });
+    return;
+  }
+#else
+  CGAL_USE(parallel);
+#endif
+  for(std::size_t c = 0; c < chunks; ++c) f(c * size, (std::min)(n, (c + 1) * size), c);
+}
+
+/// Number of chunks `for_each_chunk(n, size, ...)` makes.
+inline std::size_t number_of_chunks(std::size_t n, std::size_t size) { return (n + size - 1) / size; }
+
+/// Calls `f(i)` for every i in [0, n), concurrently when `parallel`; `f` must not write
+/// anything another index reads.
+template <class Function>
+void parallel_for_each_index(std::size_t n, bool parallel, const Function& f)
+{
+  for_each_chunk(n, 4096, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for(std::size_t i = begin; i < end; ++i) f(i);
+  });
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PARALLEL_H
