@@ -4,9 +4,12 @@
 // no cracks, areas, one vertex per point, owners, the crossings on every mesh edge (counted
 // here with exact rationals), and a valid polygon mesh built from the pieces. The adversarial
 // cases put Voronoi vertices exactly on mesh edges and vertices and bisectors along edges.
+// Last, the repair's check on the cuts is held against the check on the stitched partition.
 #include <catch2/catch.hpp>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -407,4 +410,93 @@ TEST_CASE("stitch: a triple point on a needle, where two sites' fields differ by
   CHECK(triple_points == 1);
   CHECK(owners.size() == 3);
   CHECK(area == Approx(r->mesh.total_area).epsilon(1e-9));
+}
+
+// The repair's check on the cuts (Symbolic_cell_check.h: broken cells, orphan pieces, regions
+// per site and neighbours) against the check on the stitched partition, its oracle: random candidate subsets per face make cells in many pieces, and
+// neighbouring faces that disagree along their edge (a site winning different stretches of
+// it on each side), as the repair's bans do.
+TEST_CASE("cell check: the check on the cuts finds the stitched partition's broken cells and orphans", "[stitcher][repair]")
+{
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-0.5, 10.5);
+  int decided = 0, with_broken = 0;
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    INFO("trial " << trial);
+    const St_mesh m = st_grid(10, [](int i, int j) { return 0.5 * std::sin(0.8 * i) * std::cos(0.6 * j); });
+    std::vector<St_point> sites;
+    for(int k = 0; k < 12; ++k) sites.push_back({{ u(rng), u(rng), 0.2 * u(rng) }});
+    St_run r;
+    r.surface = m;
+    r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
+    for(const St_point& s : sites)
+    {
+      std::vector<double> f;
+      for(St_mesh::Vertex_index v : vertices(r.surface))
+      {
+        const St_kernel::Point_3& p = r.surface.point(v);
+        f.push_back(CGAL::square(p.x() - s[0]) + CGAL::square(p.y() - s[1]) + CGAL::square(p.z() - s[2]));
+      }
+      r.field.push_back(f);
+    }
+    // each face keeps each site with probability 1/3 (at least one), some faces none
+    std::bernoulli_distribution keep(1. / 3), unreached(0.02);
+    r.candidates.assign(r.mesh.number_of_faces(), {});
+    for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+    {
+      if(unreached(rng)) { r.cuts.push_back(SVI::Face_cut()); continue; }
+      const auto& t = r.mesh.triangles[f];
+      for(std::size_t s = 0; s < sites.size(); ++s)
+        if(keep(rng) || (s + 1 == sites.size() && r.candidates[f].empty()))
+          r.candidates[f].push_back({ std::uint32_t(s), {{ r.field[s][t[0]], r.field[s][t[1]], r.field[s][t[2]] }} });
+      SVI::clean_candidate_list(r.candidates[f]);
+      if(r.candidates[f].size() == 1)
+      {
+        r.cuts.push_back(SVI::Face_cut());
+        r.cuts.back().whole_face = true;
+      }
+      else
+        r.cuts.push_back(SVI::Face_cutter(r.candidates[f]).cut());
+    }
+    SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
+    // each site located in a face holding a piece of it (the last such face)
+    std::vector<SVI::Site> located(sites.size());
+    for(const SVI::Partition::Piece& p : r.part.pieces)
+      if(p.site != SVI::no_site) located[p.site].face = p.face;
+    auto blocked = [](std::size_t e) { return e % 29 == 0; };   // a few breaklines
+
+    std::size_t broken = 0;
+    std::vector<std::pair<std::size_t, std::size_t> > orphans, pairs, stitched_pairs;
+    std::vector<std::size_t> regions;
+    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, r.candidates, r.cuts);
+    if(!check.run(located, blocked, broken, orphans, &pairs, &regions)) continue;   // an exact tie somewhere
+    if(r.part.welded_vertices != 0 || r.part.dropped_pieces != 0) continue;        // the pipeline checks the stitched partition then
+    ++decided;
+    const SVI::Cell_components stitched = SVI::cell_components(r.mesh, r.part, sites.size(), blocked, &stitched_pairs);
+    CHECK(broken == SVI::number_of_broken_cells(stitched));
+    for(std::size_t i = 0; i < sites.size(); ++i) CHECK(regions[i] == stitched.site_components[i].size());
+    // the same neighbours (pairs of sites, either order, without the unreached area)
+    auto neighbour_set = [](const std::vector<std::pair<std::size_t, std::size_t> >& v) {
+      std::set<std::pair<std::size_t, std::size_t> > out;
+      for(const auto& ab : v)
+        if(ab.first != SVI::no_site && ab.second != SVI::no_site)
+          out.insert(std::make_pair((std::min)(ab.first, ab.second), (std::max)(ab.first, ab.second)));
+      return out;
+    };
+    CHECK(neighbour_set(pairs) == neighbour_set(stitched_pairs));
+    SVI::Banned_fields banned(r.mesh.number_of_faces());
+    std::vector<std::size_t> dirty;
+    SVI::ban_orphan_pieces(located, r.part, stitched, banned, dirty);
+    CHECK(orphans.size() == banned.size());
+    for(const auto& x : orphans) CHECK(banned.contains(x.first, x.second));
+    std::vector<std::size_t> faces;
+    for(const auto& x : orphans) faces.push_back(x.second);
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    CHECK(faces == dirty);
+    with_broken += (broken > 0);
+  }
+  // the trials must exercise the check: most decide, and most of those have broken cells
+  CHECK(decided >= 30);
+  CHECK(with_broken >= 20);
 }

@@ -52,6 +52,9 @@ public:
         m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
         ++m_count;
       }
+    // no breakline: `is_blocked()` then answers without touching a per-edge array (a cache
+    // miss per propagation step on a large mesh)
+    if(m_count == 0) std::vector<std::uint8_t>().swap(m_blocked);
   }
 
   bool empty() const { return m_count == 0; }

@@ -24,6 +24,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 #include <CGAL/Surface_voronoi_diagram/internal/global_nearest.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
@@ -68,7 +69,7 @@ public:
     for(std::size_t i = 0; i < n; ++i) site_faces[i] = d.sites[i].face;
     Banned_fields banned(m_mesh.number_of_faces());
     const bool global_nearest = use_global_nearest();
-    auto is_blocked = [&](std::size_t f, int k) { return d.breaklines.is_blocked(m_mesh.edges[f][k]); };
+    auto is_blocked = [&](std::size_t f, int k) { return !d.breaklines.empty() && d.breaklines.is_blocked(m_mesh.edges[f][k]); };
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
 
     d.statistics = Diagram_statistics();
@@ -85,21 +86,64 @@ public:
 
     m_cuts.assign(m_mesh.number_of_faces(), Face_cut());
     cut_faces(propagation.candidates, nullptr);
-    stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
     d.statistics.propagation_events = propagation.statistics.events;
     d.statistics.admitted_fields = propagation.statistics.admitted;
     m_timer.stop("cutting");
     if(!progress(0.7)) return false;
 
-    Cell_components components;
-    std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
+    // The repair rounds decide on the cuts, and the partition is stitched once, after them
+    // (see Symbolic_cell_check.h). The check on the stitched partition runs where the cuts
+    // cannot decide (an exact tie), and where stitching welded or dropped what the cuts keep
+    // apart (features below double precision); its rounds then go on from there.
     std::vector<std::size_t> dirty, touched;
     auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
-    for(std::size_t round = 0;; ++round)
+    std::size_t round = 0;
+    bool first_check_done = false, decided_on_cuts = false;
+    std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
+    std::vector<std::size_t> regions_of_site;
+    if(!global_nearest && m_settings.repair)
     {
-      components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs, m_settings.parallel);
+      Symbolic_cell_check<TriangleMesh> check(m_mesh, propagation.candidates, m_cuts);
+      std::vector<std::pair<std::size_t, std::size_t> > orphans;
+      for(;; ++round)
+      {
+        std::size_t broken = 0;
+        if(!check.run(d.sites, blocked_edge, broken, orphans, &site_pairs, &regions_of_site)) break;
+        if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
+        first_check_done = true;
+        decided_on_cuts = (broken == 0);
+        if(broken == 0 || round >= m_settings.max_repair_rounds) break;
+        dirty.clear();
+        for(const std::pair<std::size_t, std::size_t>& x : orphans)
+        {
+          banned.insert(x.first, x.second);
+          if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
+        }
+        propagation.repropagate(dirty, is_banned, touched);
+        cut_faces(propagation.candidates, &touched);
+        d.statistics.repair_rounds = round + 1;
+        d.statistics.banned_fields = banned.size();
+        if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
+      }
+    }
+    m_timer.stop("repair");
+    stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
+    m_timer.stop("cutting");
+
+    for(;; ++round)
+    {
+      if(decided_on_cuts && d.partition.welded_vertices == 0 && d.partition.dropped_pieces == 0)
+      {
+        d.statistics.broken_cells = 0;
+        break;
+      }
+      decided_on_cuts = false;   // from here on, the stitched partition decides
+      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs, m_settings.parallel);
+      regions_of_site.assign(n, 0);
+      for(std::size_t i = 0; i < n; ++i) regions_of_site[i] = components.site_components[i].size();
       const std::size_t broken = number_of_broken_cells(components);
-      if(round == 0) d.statistics.broken_cells_before_repair = broken;
+      if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
+      first_check_done = true;
       d.statistics.broken_cells = broken;
       if(broken == 0 || global_nearest || !m_settings.repair || round >= m_settings.max_repair_rounds)
         break;
@@ -112,7 +156,7 @@ public:
       if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
     }
     d.candidates = std::move(propagation.candidates);
-    summarize(components, site_pairs);
+    summarize(regions_of_site, site_pairs);
     m_timer.stop("repair");
     return progress(1.);
   }
@@ -153,7 +197,7 @@ private:
     });
   }
 
-  void summarize(const Cell_components& components, const std::vector<std::pair<std::size_t, std::size_t> >& site_pairs)
+  void summarize(const std::vector<std::size_t>& regions_of_site, const std::vector<std::pair<std::size_t, std::size_t> >& site_pairs)
   {
     Diagram_data<TriangleMesh>& d = m_data;
     Diagram_statistics& s = d.statistics;
@@ -167,7 +211,7 @@ private:
     }
     for(std::size_t i = 0; i < n; ++i)
     {
-      d.cell_pieces[i] = components.site_components[i].size();
+      d.cell_pieces[i] = regions_of_site[i];
       if(d.cell_pieces[i] == 0) ++s.empty_cells;
       else ++s.cells;
       s.pieces += d.cell_pieces[i];

@@ -59,6 +59,7 @@ struct Partition
   std::vector<std::size_t> face_begin;      // pieces of face f: [face_begin[f], face_begin[f+1])
   std::size_t welded_vertices = 0;
   std::size_t inserted_vertices = 0;
+  std::size_t dropped_pieces = 0;          // pieces left without area by welding or collinear
 
   /// face_begin again after pieces were removed (faces left without a piece get an empty range)
   void rebuild_face_begin(std::size_t number_of_faces)

@@ -409,9 +409,11 @@ private:
       for(std::size_t& id : p.vertices) id = m_representative[id];
       remove_cyclic_repeats(p.vertices);
     }
+    const std::size_t before = out.pieces.size();
     out.pieces.erase(std::remove_if(out.pieces.begin(), out.pieces.end(),
                                     [](const Partition::Piece& p) { return p.vertices.size() < 3; }),
                      out.pieces.end());
+    out.dropped_pieces += before - out.pieces.size();
     out.rebuild_face_begin(nf);
   }
 
@@ -603,6 +605,7 @@ private:
         degenerate.push_back(k);
     }
     if(degenerate.empty()) return;
+    out.dropped_pieces += degenerate.size();
     std::unordered_map<std::uint64_t, std::size_t> edge_owner;   // directed edge -> piece
     const std::uint64_t nv = out.vertices.size();
     std::vector<std::uint8_t> dropped(out.pieces.size(), 0);

@@ -1,0 +1,258 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The connectivity check on the per-face cuts, before stitching. Stitching the whole mesh
+// again after each repair round cost two thirds of a round (a round changes a few dozen
+// faces), so the repair rounds decide on the cuts and the partition is stitched once, after
+// them; the stitched check then confirms, and a disagreement falls back to stitched rounds.
+//
+// A site's piece of a face is convex (a lower envelope of affine fields), so a face holds at
+// most one piece per site and a cell's pieces connect only across mesh edges: two pieces of a
+// site in neighbouring faces are one region when their segments on the shared edge overlap
+// with positive length. The segment ends are computed as the stitcher places them. A face
+// where the cutter met an exact tie can have segments of zero length that the stitcher welds
+// away, so with such a face anywhere the check declines and the caller stitches instead.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SYMBOLIC_CELL_CHECK_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SYMBOLIC_CELL_CHECK_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+template <class TriangleMesh>
+class Symbolic_cell_check
+{
+public:
+  typedef Indexed_mesh<TriangleMesh> Mesh;
+
+  Symbolic_cell_check(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts)
+  {}
+
+  /// Finds the cells in several pieces. If it can decide (no face with an exact tie, and every
+  /// broken cell holds its site's own location), returns true with their number in `broken`
+  /// and, in `orphans`, the (site, face) of every piece outside its site's own region, in face
+  /// order (what `ban_orphan_pieces()` bans on the stitched partition); otherwise returns false.
+  ///
+  /// When `site_pairs` is given, it receives the sites of every two pieces of different
+  /// sites that share a stretch of a bisector or of a mesh edge (what `cell_components()`
+  /// gives on the stitched partition), and `regions_of_site` the number of regions of each
+  /// site.
+  template <class Blocked_edge>
+  bool run(const std::vector<Site>& sites, const Blocked_edge& blocked_edge, std::size_t& broken,
+           std::vector<std::pair<std::size_t, std::size_t> >& orphans,
+           std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr,
+           std::vector<std::size_t>* regions_of_site = nullptr)
+  {
+    orphans.clear();
+    const std::size_t nf = m_mesh.number_of_faces();
+    if(!number_pieces()) return false;
+    Disjoint_sets regions(m_site_of_piece.size());
+    if(site_pairs) site_pairs->clear();
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      if(site_pairs) bisector_pairs(f, *site_pairs);
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t g = m_mesh.neighbors[f][k];
+        if(g == Mesh::none || g < f) continue;
+        across(f, k, g, !blocked_edge(m_mesh.edges[f][k]), regions, site_pairs);
+      }
+    }
+
+    // the regions of each site, in the order of their first piece
+    const std::size_t n = sites.size();
+    std::vector<std::size_t> root_of_first(n, no_site);
+    std::vector<std::uint8_t> is_broken(n, 0);
+    broken = 0;
+    if(regions_of_site) regions_of_site->assign(n, 0);
+    for(std::size_t p = 0; p < m_site_of_piece.size(); ++p)
+    {
+      const std::size_t s = m_site_of_piece[p];
+      if(s == no_site) continue;
+      const std::size_t r = regions.find(p);
+      if(regions_of_site && r == p) ++(*regions_of_site)[s];   // a region's root is its smallest piece
+      if(root_of_first[s] == no_site) root_of_first[s] = r;
+      else if(root_of_first[s] != r && !is_broken[s]) { is_broken[s] = 1; ++broken; }
+    }
+    if(broken == 0) return true;
+    // a broken cell keeps the region holding its site's location
+    std::vector<std::size_t> own_region(n, no_site);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(!is_broken[i]) continue;
+      const std::size_t p = piece_of(sites[i].face, i);
+      if(p == no_site) return false;   // a weighted site outside its cell: the largest region is kept, by area
+      own_region[i] = regions.find(p);
+    }
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::size_t p = m_piece_begin[f]; p < m_piece_begin[f + 1]; ++p)
+      {
+        const std::size_t s = m_site_of_piece[p];
+        if(s != no_site && is_broken[s] && regions.find(p) != own_region[s]) orphans.emplace_back(s, f);
+      }
+    return true;
+  }
+
+private:
+  // Pieces numbered face by face: a face nobody reached is one piece of no site. False if a
+  // face met an exact tie.
+  bool number_pieces()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    m_piece_begin.assign(nf + 1, 0);
+    m_site_of_piece.clear();
+    m_site_of_piece.reserve(nf + nf / 2);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      if(m_cuts[f].degenerate) return false;
+      m_piece_begin[f] = m_site_of_piece.size();
+      const Candidate_list& list = m_candidates[f];
+      if(list.empty())
+        m_site_of_piece.push_back(no_site);
+      else if(m_cuts[f].whole_face)
+        m_site_of_piece.push_back(list[0].site);
+      else
+        for(const Symbolic_piece& piece : m_cuts[f].pieces) m_site_of_piece.push_back(list[piece.candidate].site);
+    }
+    m_piece_begin[nf] = m_site_of_piece.size();
+    return true;
+  }
+
+  std::size_t piece_of(std::size_t f, std::size_t site) const
+  {
+    for(std::size_t p = m_piece_begin[f]; p < m_piece_begin[f + 1]; ++p)
+      if(m_site_of_piece[p] == site) return p;
+    return no_site;
+  }
+
+  // The piece of face f with index `local` in it, and its segment on local edge k as
+  // parameters along the mesh edge (from its lower vertex index); false if it has none.
+  bool segment_on_edge(std::size_t f, std::size_t local, int k, double& lo, double& hi) const
+  {
+    const Face_cut& cut = m_cuts[f];
+    if(cut.whole_face || cut.pieces.size() <= 1)
+    {
+      lo = 0.;
+      hi = 1.;
+      return true;
+    }
+    const Symbolic_piece& piece = cut.pieces[local];
+    const std::size_t m = piece.vertices.size();
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      const Piece_edge_support& s = piece.supports[j];
+      if(!s.on_mesh_edge || s.local != k) continue;
+      const double a = parameter(f, piece.candidate, piece.vertices[j], k);
+      const double b = parameter(f, piece.candidate, piece.vertices[(j + 1) % m], k);
+      lo = (std::min)(a, b);
+      hi = (std::max)(a, b);
+      return true;
+    }
+    return false;
+  }
+
+  // Where a vertex of a piece of `owner` lies along local edge k of face f, computed as the
+  // stitcher places it.
+  double parameter(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v, int k) const
+  {
+    const std::size_t e = m_mesh.edges[f][k];
+    const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
+    if(v.kind == Symbolic_vertex::CORNER)
+      return m_mesh.triangles[f][v.local] == va ? 0. : 1.;
+    const Candidate_list& list = m_candidates[f];
+    const std::uint32_t s = list[owner].site, t = list[v.other].site;
+    const double* lo = (s < t ? list[owner] : list[v.other]).value.data();
+    const double* hi = (s < t ? list[v.other] : list[owner]).value.data();
+    const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
+    const double da = lo[ca] - hi[ca], db = lo[cb] - hi[cb];
+    const double u = da / (da - db);
+    return (std::min)(1., (std::max)(0., u));
+  }
+
+  // the sites on both sides of every bisector stretch inside face f
+  void bisector_pairs(std::size_t f, std::vector<std::pair<std::size_t, std::size_t> >& pairs) const
+  {
+    const Face_cut& cut = m_cuts[f];
+    if(cut.whole_face || cut.pieces.size() <= 1) return;
+    const Candidate_list& list = m_candidates[f];
+    for(const Symbolic_piece& piece : cut.pieces)
+      for(const Piece_edge_support& support : piece.supports)
+        if(!support.on_mesh_edge && piece.candidate < support.other)
+          pairs.emplace_back(list[piece.candidate].site, list[support.other].site);
+  }
+
+  // The pieces on both sides of local edge k of f (g across it) whose segments on the edge
+  // overlap: one region if they are of one site and `connect`, a pair of neighbours if not.
+  void across(std::size_t f, int k, std::size_t g, bool connect, Disjoint_sets& regions,
+              std::vector<std::pair<std::size_t, std::size_t> >* pairs) const
+  {
+    // most faces are one piece, and a face in one piece is the whole triangle: no segments
+    const std::size_t pf = m_piece_begin[f], pg = m_piece_begin[g];
+    if(m_piece_begin[f + 1] == pf + 1 && m_piece_begin[g + 1] == pg + 1)
+    {
+      meet(pf, pg, connect, regions, pairs);
+      return;
+    }
+    int kg = 0;
+    while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
+    if(kg == 3) return;
+    for(std::size_t p = pf; p < m_piece_begin[f + 1]; ++p)
+    {
+      double lo_f, hi_f;
+      if(!segment_on_edge(f, p - pf, k, lo_f, hi_f)) continue;
+      for(std::size_t q = pg; q < m_piece_begin[g + 1]; ++q)
+      {
+        if(!pairs && m_site_of_piece[q] != m_site_of_piece[p]) continue;
+        double lo_g, hi_g;
+        if(!segment_on_edge(g, q - pg, kg, lo_g, hi_g)) continue;
+        if((std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g)) meet(p, q, connect, regions, pairs);
+      }
+    }
+  }
+
+  void meet(std::size_t p, std::size_t q, bool connect, Disjoint_sets& regions,
+            std::vector<std::pair<std::size_t, std::size_t> >* pairs) const
+  {
+    const std::size_t s = m_site_of_piece[p], t = m_site_of_piece[q];
+    if(s != t)
+    {
+      if(pairs) pairs->emplace_back(s, t);
+    }
+    else if(connect && s != no_site)
+      regions.unite(p, q);
+  }
+
+  const Mesh& m_mesh;
+  const Candidate_lists& m_candidates;
+  const std::vector<Face_cut>& m_cuts;
+  std::vector<std::size_t> m_piece_begin;
+  std::vector<std::size_t> m_site_of_piece;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SYMBOLIC_CELL_CHECK_H
