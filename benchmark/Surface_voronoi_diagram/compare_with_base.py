@@ -79,11 +79,16 @@ def run_once(program, mesh, args, work):
     return stats
 
 
-def compare(new, old, mesh, args, repeat, work):
+# extra arguments of the new program (--threads), set from the command line
+NEW_ARGS = []
+
+
+def compare(new, old, mesh, args, repeat, work, new_args=None, old_args=()):
     runs = {"new": [], "old": []}
+    new_args = NEW_ARGS if new_args is None else new_args
     for _ in range(repeat):
-        runs["new"].append(run_once(new, mesh, args, work))
-        runs["old"].append(run_once(old, mesh, args, work))
+        runs["new"].append(run_once(new, mesh, args + list(new_args), work))
+        runs["old"].append(run_once(old, mesh, args + list(old_args), work))
     med = {}
     for side, rs in runs.items():
         keys = set().union(*rs)
@@ -123,7 +128,9 @@ def main():
     p.add_argument("--data")
     p.add_argument("--work", default="/tmp/svd_compare")
     p.add_argument("--repeat", type=int, default=3)
-    p.add_argument("--sections", default="diagram,sites,meshes,lloyd,biharmonic,geodesic")
+    p.add_argument("--sections", default="diagram,sites,meshes,lloyd,biharmonic,geodesic,threads")
+    p.add_argument("--new-threads", type=int, default=1,
+                   help="--threads for the new program in the comparisons with the base (default 1: the goals are single-threaded)")
     p.add_argument("--out")
     p.add_argument("--quick", action="store_true", help="boot only, one repetition")
     p.add_argument("--build-base")
@@ -135,13 +142,14 @@ def main():
     if not (a.program and a.base_program and a.data):
         p.error("--program, --base-program and --data are needed")
     os.makedirs(a.work, exist_ok=True)
+    NEW_ARGS[:] = ["--threads", str(a.new_threads)]
     sections = a.sections.split(",")
     repeat = 1 if a.quick else a.repeat
     big = [] if a.quick else ["igea-537k", "igea-2M"]
     paths = meshes(a.data, a.work, big)
     report = ["# Comparison with the base program", "",
-              "new: `%s`, old: `%s`; %d interleaved run(s) each, medians; load average before: %s" % (
-                  a.program, a.base_program, repeat, " ".join("%.2f" % x for x in os.getloadavg())), ""]
+              "new: `%s --threads %d`, old: `%s`; %d interleaved run(s) each, medians; load average before: %s" % (
+                  a.program, a.new_threads, a.base_program, repeat, " ".join("%.2f" % x for x in os.getloadavg())), ""]
 
     def section(title, rows, keys):
         report.extend(["## " + title, "", table(rows, keys), ""])
@@ -199,6 +207,15 @@ def main():
         section(title, rows, keys)
         if metric == "biharmonic" and min(ys_new + ys_old) > 0:
             report.append("slope of the embedding time against faces: new %.3f, old %.3f\n" % (slope(xs, ys_new), slope(xs, ys_old)))
+    if "threads" in sections:
+        rows = []
+        for name, metric in [("boot", "euclidean"), ("igea", "euclidean")] + [(m, mt) for m in big if m != "igea-2M"
+                                                                            for mt in ("euclidean", "geodesic")]:
+            rows.append(("%s, %s, 10k" % (name, metric),
+                         compare(a.program, a.program, paths[name], ["--random", "10000", "--seed", "1", "--metric", metric],
+                                 repeat, a.work, new_args=["--threads", "2"], old_args=["--threads", "1"])))
+        section("Both cores: the new program on 2 threads (new) against 1 thread (old)", rows,
+                ["compute", "propagation", "cutting", "repair", "wall", "peak_mib"])
     report.append("load average after: %s" % " ".join("%.2f" % x for x in os.getloadavg()))
     if a.out:
         with open(a.out, "w") as f:

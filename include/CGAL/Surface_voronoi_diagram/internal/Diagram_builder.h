@@ -108,7 +108,7 @@ public:
       for(;; ++round)
       {
         std::size_t broken = 0;
-        if(!check.run(d.sites, blocked_edge, broken, orphans, &site_pairs, &regions_of_site)) break;
+        if(!check.run(d.sites, blocked_edge, broken, orphans, &site_pairs, &regions_of_site, m_settings.parallel)) break;
         if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
         first_check_done = true;
         decided_on_cuts = (broken == 0);

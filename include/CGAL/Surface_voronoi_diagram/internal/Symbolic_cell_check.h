@@ -30,6 +30,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -58,26 +59,50 @@ public:
   /// When `site_pairs` is given, it receives the sites of every two pieces of different
   /// sites that share a stretch of a bisector or of a mesh edge (what `cell_components()`
   /// gives on the stitched partition), and `regions_of_site` the number of regions of each
-  /// site.
+  /// site. With `parallel`, the faces are visited in concurrent chunks whose findings are
+  /// merged in chunk order: the same result, in the same order.
   template <class Blocked_edge>
   bool run(const std::vector<Site>& sites, const Blocked_edge& blocked_edge, std::size_t& broken,
            std::vector<std::pair<std::size_t, std::size_t> >& orphans,
            std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr,
-           std::vector<std::size_t>* regions_of_site = nullptr)
+           std::vector<std::size_t>* regions_of_site = nullptr, bool parallel = false)
   {
     orphans.clear();
     const std::size_t nf = m_mesh.number_of_faces();
     if(!number_pieces()) return false;
     Disjoint_sets regions(m_site_of_piece.size());
     if(site_pairs) site_pairs->clear();
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      if(site_pairs) bisector_pairs(f, *site_pairs);
-      for(int k = 0; k < 3; ++k)
+    auto visit = [&](std::size_t begin, std::size_t end, Findings& out) {
+      for(std::size_t f = begin; f < end; ++f)
       {
-        const std::size_t g = m_mesh.neighbors[f][k];
-        if(g == Mesh::none || g < f) continue;
-        across(f, k, g, !blocked_edge(m_mesh.edges[f][k]), regions, site_pairs);
+        if(out.pairs) bisector_pairs(f, *out.pairs);
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t g = m_mesh.neighbors[f][k];
+          if(g == Mesh::none || g < f) continue;
+          across(f, k, g, !blocked_edge(m_mesh.edges[f][k]), out);
+        }
+      }
+    };
+    if(!parallel)
+    {
+      Findings direct{ &regions, nullptr, site_pairs };
+      visit(0, nf, direct);
+    }
+    else
+    {
+      const std::size_t chunk = 8192;
+      std::vector<std::vector<std::pair<std::size_t, std::size_t> > > unions(number_of_chunks(nf, chunk)), pairs(unions.size());
+      for_each_chunk(nf, chunk, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
+        Findings gathered{ nullptr, &unions[c], site_pairs ? &pairs[c] : nullptr };
+        visit(begin, end, gathered);
+      });
+      for(std::size_t c = 0; c < unions.size(); ++c)
+      {
+        for(const auto& pq : unions[c]) regions.unite(pq.first, pq.second);
+        if(site_pairs) site_pairs->insert(site_pairs->end(), pairs[c].begin(), pairs[c].end());
+        std::vector<std::pair<std::size_t, std::size_t> >().swap(unions[c]);
+        std::vector<std::pair<std::size_t, std::size_t> >().swap(pairs[c]);
       }
     }
 
@@ -116,6 +141,15 @@ public:
   }
 
 private:
+  // Where a visit puts what it finds: unions straight into `regions`, or gathered in `unions`
+  // for a chunk; pairs of neighbouring sites in `pairs` if wanted.
+  struct Findings
+  {
+    Disjoint_sets* regions;
+    std::vector<std::pair<std::size_t, std::size_t> >* unions;
+    std::vector<std::pair<std::size_t, std::size_t> >* pairs;
+  };
+
   // Pieces numbered face by face: a face nobody reached is one piece of no site. False if a
   // face met an exact tie.
   bool number_pieces()
@@ -205,14 +239,13 @@ private:
 
   // The pieces on both sides of local edge k of f (g across it) whose segments on the edge
   // overlap: one region if they are of one site and `connect`, a pair of neighbours if not.
-  void across(std::size_t f, int k, std::size_t g, bool connect, Disjoint_sets& regions,
-              std::vector<std::pair<std::size_t, std::size_t> >* pairs) const
+  void across(std::size_t f, int k, std::size_t g, bool connect, Findings& out) const
   {
     // most faces are one piece, and a face in one piece is the whole triangle: no segments
     const std::size_t pf = m_piece_begin[f], pg = m_piece_begin[g];
     if(m_piece_begin[f + 1] == pf + 1 && m_piece_begin[g + 1] == pg + 1)
     {
-      meet(pf, pg, connect, regions, pairs);
+      meet(pf, pg, connect, out);
       return;
     }
     int kg = 0;
@@ -224,24 +257,26 @@ private:
       if(!segment_on_edge(f, p - pf, k, lo_f, hi_f)) continue;
       for(std::size_t q = pg; q < m_piece_begin[g + 1]; ++q)
       {
-        if(!pairs && m_site_of_piece[q] != m_site_of_piece[p]) continue;
+        if(!out.pairs && m_site_of_piece[q] != m_site_of_piece[p]) continue;
         double lo_g, hi_g;
         if(!segment_on_edge(g, q - pg, kg, lo_g, hi_g)) continue;
-        if((std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g)) meet(p, q, connect, regions, pairs);
+        if((std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g)) meet(p, q, connect, out);
       }
     }
   }
 
-  void meet(std::size_t p, std::size_t q, bool connect, Disjoint_sets& regions,
-            std::vector<std::pair<std::size_t, std::size_t> >* pairs) const
+  void meet(std::size_t p, std::size_t q, bool connect, Findings& out) const
   {
     const std::size_t s = m_site_of_piece[p], t = m_site_of_piece[q];
     if(s != t)
     {
-      if(pairs) pairs->emplace_back(s, t);
+      if(out.pairs) out.pairs->emplace_back(s, t);
     }
     else if(connect && s != no_site)
-      regions.unite(p, q);
+    {
+      if(out.regions) out.regions->unite(p, q);
+      else out.unions->emplace_back(p, q);
+    }
   }
 
   const Mesh& m_mesh;
