@@ -499,7 +499,7 @@ private:
     settings.max_repair_rounds = choose_parameter(get_parameter(np, SVnp::max_repair_rounds), std::size_t(100));
     CGAL_precondition_msg(settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
     settings.has_weights = has_weights;
-    settings.parallel = SVi::is_parallel<ConcurrencyTag>();
+    settings.parallel = SVi::use_threads<ConcurrencyTag>();
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }

@@ -32,6 +32,8 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <utility>
@@ -251,18 +253,18 @@ private:
     int kg = 0;
     while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
     if(kg == 3) return;
+    // each side's stretches on the edge, computed once
+    struct Stretch { std::size_t piece; double lo, hi; };
+    boost::container::small_vector<Stretch, 8> on_f, on_g;
+    double lo, hi;
     for(std::size_t p = pf; p < m_piece_begin[f + 1]; ++p)
-    {
-      double lo_f, hi_f;
-      if(!segment_on_edge(f, p - pf, k, lo_f, hi_f)) continue;
-      for(std::size_t q = pg; q < m_piece_begin[g + 1]; ++q)
-      {
-        if(!out.pairs && m_site_of_piece[q] != m_site_of_piece[p]) continue;
-        double lo_g, hi_g;
-        if(!segment_on_edge(g, q - pg, kg, lo_g, hi_g)) continue;
-        if((std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g)) meet(p, q, connect, out);
-      }
-    }
+      if(segment_on_edge(f, p - pf, k, lo, hi)) on_f.push_back(Stretch{ p, lo, hi });
+    for(std::size_t q = pg; q < m_piece_begin[g + 1]; ++q)
+      if(segment_on_edge(g, q - pg, kg, lo, hi)) on_g.push_back(Stretch{ q, lo, hi });
+    for(const Stretch& a : on_f)
+      for(const Stretch& b : on_g)
+        if((out.pairs || m_site_of_piece[a.piece] == m_site_of_piece[b.piece]) && (std::max)(a.lo, b.lo) < (std::min)(a.hi, b.hi))
+          meet(a.piece, b.piece, connect, out);
   }
 
   void meet(std::size_t p, std::size_t q, bool connect, Findings& out) const

@@ -22,6 +22,8 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
@@ -43,6 +45,20 @@ constexpr bool is_parallel()
                 "Parallel_tag is enabled but TBB is unavailable (link CGAL::TBB_support, or use Parallel_if_available_tag)");
 #endif
   return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+}
+
+/// Whether to run the chunked parallel paths now: `ConcurrencyTag` asks for threads and TBB
+/// allows more than one (with one, as under `tbb::global_control` limited to 1, the
+/// sequential paths do the same work without gathering what the chunks find).
+template <class ConcurrencyTag>
+bool use_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return is_parallel<ConcurrencyTag>() && tbb::this_task_arena::max_concurrency() > 1
+         && tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
+#else
+  return is_parallel<ConcurrencyTag>();
+#endif
 }
 
 /// Calls `f(begin, end, chunk)` for the chunks [chunk * size, (chunk + 1) * size) of [0, n):
