@@ -21,7 +21,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
-#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/unite_face_by_face.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -150,44 +150,15 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
   const std::size_t np = partition.pieces.size();
   Disjoint_sets pieces_of_a_cell(np);
   if(site_pairs) site_pairs->clear();
-  auto classify = [&](std::size_t p, std::size_t q, std::size_t e, auto&& unite, auto&& neighbours) {
-    if(partition.pieces[p].site != partition.pieces[q].site)
-    {
-      if(site_pairs) neighbours(partition.pieces[p].site, partition.pieces[q].site);
-      return;
-    }
-    if(e != no_site && blocked_edge(e)) return;
-    unite(p, q);
-  };
-  if(!parallel)
-  {
-    for_each_piece_adjacency(mesh, partition, [&](std::size_t p, std::size_t q, std::size_t e) {
-      classify(p, q, e, [&](std::size_t a, std::size_t b) { pieces_of_a_cell.unite(a, b); },
-               [&](std::size_t a, std::size_t b) { site_pairs->emplace_back(a, b); });
+  unite_face_by_face(mesh.number_of_faces(), parallel, pieces_of_a_cell, site_pairs,
+                     [&](std::size_t begin, std::size_t end, Union_sink& out) {
+    for_each_piece_adjacency(mesh, partition, begin, end, [&](std::size_t p, std::size_t q, std::size_t e) {
+      if(partition.pieces[p].site != partition.pieces[q].site)
+        out.pair(partition.pieces[p].site, partition.pieces[q].site);
+      else if(e == no_site || !blocked_edge(e))
+        out.unite(p, q);
     });
-  }
-  else
-  {
-    struct Found
-    {
-      std::vector<std::pair<std::size_t, std::size_t> > unions, neighbours;
-    };
-    const std::size_t nf = mesh.number_of_faces(), chunk = 8192;
-    std::vector<Found> found(number_of_chunks(nf, chunk));
-    for_each_chunk(nf, chunk, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
-      Found& out = found[c];
-      for_each_piece_adjacency(mesh, partition, begin, end, [&](std::size_t p, std::size_t q, std::size_t e) {
-        classify(p, q, e, [&](std::size_t a, std::size_t b) { out.unions.emplace_back(a, b); },
-                 [&](std::size_t a, std::size_t b) { out.neighbours.emplace_back(a, b); });
-      });
-    });
-    for(Found& f : found)
-    {
-      for(const auto& ab : f.unions) pieces_of_a_cell.unite(ab.first, ab.second);
-      if(site_pairs) site_pairs->insert(site_pairs->end(), f.neighbours.begin(), f.neighbours.end());
-      f = Found();
-    }
-  }
+  });
 
   Cell_components cc;
   cc.piece_component.assign(np, 0);

@@ -101,6 +101,14 @@ public:
     bool first_check_done = false, decided_on_cuts = false;
     std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
     std::vector<std::size_t> regions_of_site;
+    // a repair round, once the banned fields' faces are in `dirty`
+    auto repair_round = [&]() {
+      propagation.repropagate(dirty, is_banned, touched);
+      cut_faces(propagation.candidates, &touched);
+      d.statistics.repair_rounds = round + 1;
+      d.statistics.banned_fields = banned.size();
+    };
+    auto round_done = [&]() { return progress(0.7 + 0.25 * double(round + 1) / double(round + 2)); };
     if(!global_nearest && m_settings.repair)
     {
       Symbolic_cell_check<TriangleMesh> check(m_mesh, propagation.candidates, m_cuts);
@@ -119,11 +127,8 @@ public:
           banned.insert(x.first, x.second);
           if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
         }
-        propagation.repropagate(dirty, is_banned, touched);
-        cut_faces(propagation.candidates, &touched);
-        d.statistics.repair_rounds = round + 1;
-        d.statistics.banned_fields = banned.size();
-        if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
+        repair_round();
+        if(!round_done()) return false;
       }
     }
     m_timer.stop("repair");
@@ -148,12 +153,9 @@ public:
       if(broken == 0 || global_nearest || !m_settings.repair || round >= m_settings.max_repair_rounds)
         break;
       ban_orphan_pieces(d.sites, d.partition, components, banned, dirty);
-      propagation.repropagate(dirty, is_banned, touched);
-      cut_faces(propagation.candidates, &touched);
+      repair_round();
       stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
-      d.statistics.repair_rounds = round + 1;
-      d.statistics.banned_fields = banned.size();
-      if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
+      if(!round_done()) return false;
     }
     d.candidates = std::move(propagation.candidates);
     summarize(regions_of_site, site_pairs);

@@ -30,7 +30,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
-#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/unite_face_by_face.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -74,10 +74,10 @@ public:
     if(!number_pieces()) return false;
     Disjoint_sets regions(m_site_of_piece.size());
     if(site_pairs) site_pairs->clear();
-    auto visit = [&](std::size_t begin, std::size_t end, Findings& out) {
+    unite_face_by_face(nf, parallel, regions, site_pairs, [&](std::size_t begin, std::size_t end, Union_sink& out) {
       for(std::size_t f = begin; f < end; ++f)
       {
-        if(out.pairs) bisector_pairs(f, *out.pairs);
+        if(out.wants_pairs()) bisector_pairs(f, out);
         for(int k = 0; k < 3; ++k)
         {
           const std::size_t g = m_mesh.neighbors[f][k];
@@ -85,28 +85,7 @@ public:
           across(f, k, g, !blocked_edge(m_mesh.edges[f][k]), out);
         }
       }
-    };
-    if(!parallel)
-    {
-      Findings direct{ &regions, nullptr, site_pairs };
-      visit(0, nf, direct);
-    }
-    else
-    {
-      const std::size_t chunk = 8192;
-      std::vector<std::vector<std::pair<std::size_t, std::size_t> > > unions(number_of_chunks(nf, chunk)), pairs(unions.size());
-      for_each_chunk(nf, chunk, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
-        Findings gathered{ nullptr, &unions[c], site_pairs ? &pairs[c] : nullptr };
-        visit(begin, end, gathered);
-      });
-      for(std::size_t c = 0; c < unions.size(); ++c)
-      {
-        for(const auto& pq : unions[c]) regions.unite(pq.first, pq.second);
-        if(site_pairs) site_pairs->insert(site_pairs->end(), pairs[c].begin(), pairs[c].end());
-        std::vector<std::pair<std::size_t, std::size_t> >().swap(unions[c]);
-        std::vector<std::pair<std::size_t, std::size_t> >().swap(pairs[c]);
-      }
-    }
+    });
 
     // the regions of each site, in the order of their first piece
     const std::size_t n = sites.size();
@@ -143,15 +122,6 @@ public:
   }
 
 private:
-  // Where a visit puts what it finds: unions straight into `regions`, or gathered in `unions`
-  // for a chunk; pairs of neighbouring sites in `pairs` if wanted.
-  struct Findings
-  {
-    Disjoint_sets* regions;
-    std::vector<std::pair<std::size_t, std::size_t> >* unions;
-    std::vector<std::pair<std::size_t, std::size_t> >* pairs;
-  };
-
   // Pieces numbered face by face: a face nobody reached is one piece of no site. False if a
   // face met an exact tie.
   bool number_pieces()
@@ -228,7 +198,7 @@ private:
   }
 
   // the sites on both sides of every bisector stretch inside face f
-  void bisector_pairs(std::size_t f, std::vector<std::pair<std::size_t, std::size_t> >& pairs) const
+  void bisector_pairs(std::size_t f, Union_sink& out) const
   {
     const Face_cut& cut = m_cuts[f];
     if(cut.whole_face || cut.pieces.size() <= 1) return;
@@ -236,12 +206,12 @@ private:
     for(const Symbolic_piece& piece : cut.pieces)
       for(const Piece_edge_support& support : piece.supports)
         if(!support.on_mesh_edge && piece.candidate < support.other)
-          pairs.emplace_back(list[piece.candidate].site, list[support.other].site);
+          out.pair(list[piece.candidate].site, list[support.other].site);
   }
 
   // The pieces on both sides of local edge k of f (g across it) whose segments on the edge
   // overlap: one region if they are of one site and `connect`, a pair of neighbours if not.
-  void across(std::size_t f, int k, std::size_t g, bool connect, Findings& out) const
+  void across(std::size_t f, int k, std::size_t g, bool connect, Union_sink& out) const
   {
     // most faces are one piece, and a face in one piece is the whole triangle: no segments
     const std::size_t pf = m_piece_begin[f], pg = m_piece_begin[g];
@@ -263,22 +233,17 @@ private:
       if(segment_on_edge(g, q - pg, kg, lo, hi)) on_g.push_back(Stretch{ q, lo, hi });
     for(const Stretch& a : on_f)
       for(const Stretch& b : on_g)
-        if((out.pairs || m_site_of_piece[a.piece] == m_site_of_piece[b.piece]) && (std::max)(a.lo, b.lo) < (std::min)(a.hi, b.hi))
+        if((out.wants_pairs() || m_site_of_piece[a.piece] == m_site_of_piece[b.piece]) && (std::max)(a.lo, b.lo) < (std::min)(a.hi, b.hi))
           meet(a.piece, b.piece, connect, out);
   }
 
-  void meet(std::size_t p, std::size_t q, bool connect, Findings& out) const
+  void meet(std::size_t p, std::size_t q, bool connect, Union_sink& out) const
   {
     const std::size_t s = m_site_of_piece[p], t = m_site_of_piece[q];
     if(s != t)
-    {
-      if(out.pairs) out.pairs->emplace_back(s, t);
-    }
+      out.pair(s, t);
     else if(connect && s != no_site)
-    {
-      if(out.regions) out.regions->unite(p, q);
-      else out.unions->emplace_back(p, q);
-    }
+      out.unite(p, q);
   }
 
   const Mesh& m_mesh;

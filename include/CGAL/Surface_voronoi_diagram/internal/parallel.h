@@ -61,12 +61,15 @@ bool use_threads()
 #endif
 }
 
+/// Number of chunks `for_each_chunk(n, size, ...)` makes.
+inline std::size_t number_of_chunks(std::size_t n, std::size_t size) { return (n + size - 1) / size; }
+
 /// Calls `f(begin, end, chunk)` for the chunks [chunk * size, (chunk + 1) * size) of [0, n):
 /// in order when `parallel` is false or TBB is absent, concurrently otherwise.
 template <class Function>
 void for_each_chunk(std::size_t n, std::size_t size, bool parallel, const Function& f)
 {
-  const std::size_t chunks = (n + size - 1) / size;
+  const std::size_t chunks = number_of_chunks(n, size);
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel && chunks > 1)
   {
@@ -80,9 +83,6 @@ void for_each_chunk(std::size_t n, std::size_t size, bool parallel, const Functi
 #endif
   for(std::size_t c = 0; c < chunks; ++c) f(c * size, (std::min)(n, (c + 1) * size), c);
 }
-
-/// Number of chunks `for_each_chunk(n, size, ...)` makes.
-inline std::size_t number_of_chunks(std::size_t n, std::size_t size) { return (n + size - 1) / size; }
 
 /// Calls `f(i)` for every i in [0, n), concurrently when `parallel`; `f` must not write
 /// anything another index reads.
