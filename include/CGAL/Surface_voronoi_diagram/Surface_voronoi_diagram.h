@@ -500,6 +500,7 @@ private:
     CGAL_precondition_msg(settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
     settings.has_weights = has_weights;
     settings.parallel = SVi::use_threads<ConcurrencyTag>();
+    settings.cells_only = choose_parameter(get_parameter(np, SVnp::cells_only), false);
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }

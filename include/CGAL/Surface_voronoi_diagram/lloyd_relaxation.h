@@ -95,8 +95,11 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 /// cannot increase (both steps minimize it); for the other metrics it is reported. An empty
 /// cell keeps its site; a centroid projecting onto another site's point keeps its site. The
 /// projection uses the geometric traits (named parameter `geom_traits`, by default the
-/// kernel of the vertex point map), since it constructs the locations returned. The metric
-/// is built once by the caller: no embedding is computed again per iteration.
+/// kernel of the vertex point map), since it constructs the locations returned; the search
+/// for the nearest point starts from the site's own face, and where several faces share the
+/// nearest point (on their common edge or vertex) the face found first from there is kept.
+/// The metric is built once by the caller: no embedding is computed again per iteration, and
+/// the diagrams of the iterations compute the cells only (no neighbours, no vertex owners).
 ///
 /// \tparam ConcurrencyTag the concurrency tag of the diagrams built (see
 ///         `Surface_voronoi_diagram`); default: `CGAL::Sequential_tag`
@@ -160,7 +163,6 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
 
   Tree tree;
   CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
-  tree.accelerate_distance_queries();
   const internal::Indexed_mesh<TriangleMesh> mesh(tm, vpm);
 
   Lloyd_result<TriangleMesh> result;
@@ -169,7 +171,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   {
     result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
     const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
-    const Diagram diagram = callback ? Diagram(tm, metric, sites, np.callback(inner)) : Diagram(tm, metric, sites, np);
+    const auto cells_np = Surface_voronoi::parameters::cells_only(true, np);
+    const Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
     if(diagram.is_cancelled())
     {
       result.sites = sites;
@@ -185,7 +188,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
-      const Location l = internal::locate_with_AABB_tree(centroids[i], tree, tm, vpm,
+      const Location l = internal::locate_with_AABB_tree(centroids[i], sites[i].first, tree, tm, vpm,
                                                          choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
       moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));
       sites[i] = l;

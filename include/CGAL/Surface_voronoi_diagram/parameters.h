@@ -67,6 +67,7 @@ enum refinement_edge_length_ratio_t { refinement_edge_length_ratio };
 enum refinement_max_vertices_t { refinement_max_vertices };
 enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
+enum cells_only_t { cells_only };
 } // namespace internal_np
 
 namespace parameters {
@@ -214,6 +215,9 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_max_vertices)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(input_face_map)
 // An internal hook, not API: the command-line program reads stage times through it.
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
+// An internal hook, not API: the diagrams inside lloyd_relaxation() need the cells (their
+// pieces, areas, centroids and energy), not the sites' neighbours or the vertices' owners.
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
 #endif
 
 #undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER

@@ -47,6 +47,7 @@ struct Builder_settings
   std::size_t max_repair_rounds = 100;
   bool has_weights = false;
   bool parallel = false;   // cutting, stitching and checking in concurrent chunks (TBB)
+  bool cells_only = false; // no neighbours and no vertex owners (Lloyd's diagrams)
 };
 
 template <class TriangleMesh, class Fields>
@@ -100,6 +101,7 @@ public:
     std::size_t round = 0;
     bool first_check_done = false, decided_on_cuts = false;
     std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
+    std::vector<std::pair<std::size_t, std::size_t> >* wanted_pairs = m_settings.cells_only ? nullptr : &site_pairs;
     std::vector<std::size_t> regions_of_site;
     // a repair round, once the banned fields' faces are in `dirty`
     auto repair_round = [&]() {
@@ -116,7 +118,7 @@ public:
       for(;; ++round)
       {
         std::size_t broken = 0;
-        if(!check.run(d.sites, blocked_edge, broken, orphans, &site_pairs, &regions_of_site, m_settings.parallel)) break;
+        if(!check.run(d.sites, blocked_edge, broken, orphans, wanted_pairs, &regions_of_site, m_settings.parallel)) break;
         if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
         first_check_done = true;
         decided_on_cuts = (broken == 0);
@@ -143,7 +145,7 @@ public:
         break;
       }
       decided_on_cuts = false;   // from here on, the stitched partition decides
-      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, &site_pairs, m_settings.parallel);
+      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, wanted_pairs, m_settings.parallel);
       regions_of_site.assign(n, 0);
       for(std::size_t i = 0; i < n; ++i) regions_of_site[i] = components.site_components[i].size();
       const std::size_t broken = number_of_broken_cells(components);
@@ -234,6 +236,8 @@ private:
     s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
     s.welded_vertices = d.partition.welded_vertices;
     s.inserted_vertices = d.partition.inserted_vertices;
+    d.neighbors.assign(n, std::vector<std::size_t>());
+    if(m_settings.cells_only) return;
 
     // vertex owners: the lowest (value, site) among the candidates of the faces around
     d.vertex_site.assign(m_mesh.number_of_vertices(), no_site);
@@ -251,7 +255,6 @@ private:
         }
 
     // neighbours: sites on both sides of a piece edge
-    d.neighbors.assign(n, std::vector<std::size_t>());
     for(const std::pair<std::size_t, std::size_t>& ab : site_pairs)
     {
       const std::size_t a = ab.first, b = ab.second;
