@@ -158,6 +158,13 @@ private:
     m_edge_crossings_begin.assign(nf + 1, 0);
     m_face_degenerate.assign(nf, 0);
     out.face_begin.assign(nf + 1, 0);
+    // reserved, since growing by doubling moved every piece built so far and touched fresh
+    // pages each time; vertices: the corners, and about three more per piece beyond one a face
+    std::size_t pieces = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+      pieces += (m_candidates[f].empty() || m_cuts[f].whole_face) ? 1 : m_cuts[f].pieces.size();
+    out.pieces.reserve(pieces);
+    m_origins.reserve(m_mesh.number_of_vertices() + 3 * (pieces - (std::min)(pieces, nf)));
     for(std::size_t f = 0; f < nf; ++f)
     {
       out.face_begin[f] = out.pieces.size();
