@@ -9,6 +9,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -499,4 +500,68 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
   // the trials must exercise the check: most decide, and most of those have broken cells
   CHECK(decided >= 30);
   CHECK(with_broken >= 20);
+}
+
+// The first round's check (Symbolic_cell_check::run_from_links(): the propagation's links
+// back to the sites, and a whole search of the suspects' pieces only) against the full check
+// on the cuts, its oracle, on real propagations over a steeply folded grid, where Euclidean
+// fields reach across the folds and leave cells in several pieces: where it decides, the same
+// broken cells, regions per site and orphans, in the same order.
+TEST_CASE("cell check: the first round, from the propagation's links, finds what the full check finds", "[stitcher][repair]")
+{
+  std::mt19937 rng(5);
+  int decided = 0, with_broken = 0;
+  for(int trial = 0; trial < 40; ++trial)
+  {
+    INFO("trial " << trial);
+    const double amplitude = 1.5 + 0.1 * trial;
+    const St_mesh m = st_grid(14, [&](int i, int j) { return amplitude * std::sin(1.3 * i) * std::cos(0.4 * j); });
+    St_run r;
+    r.surface = m;
+    r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
+    std::uniform_int_distribution<std::size_t> any_face(0, r.mesh.number_of_faces() - 1);
+    std::vector<SVI::Site> located(6 + trial % 10);
+    std::vector<std::size_t> site_faces;
+    for(std::size_t s = 0; s < located.size(); ++s)
+    {
+      located[s].face = any_face(rng);
+      site_faces.push_back(located[s].face);
+      const auto& t = r.mesh.triangles[located[s].face];
+      std::array<double, 3> c = {{ 0., 0., 0. }};
+      for(int k = 0; k < 3; ++k)
+        for(int j = 0; j < 3; ++j) c[j] += r.mesh.points[t[k]][j] / 3.;
+      std::vector<double> f;
+      for(const auto& p : r.mesh.points) f.push_back(CGAL::square(p[0] - c[0]) + CGAL::square(p[1] - c[1]) + CGAL::square(p[2] - c[2]));
+      r.field.push_back(f);
+    }
+    struct Fields
+    {
+      const std::vector<std::vector<double> >* field;
+      double value(std::size_t site, std::size_t v) const { return (*field)[site][v]; }
+    } fields{ &r.field };
+    auto blocked_edge = [](std::size_t e) { return e % 37 == 0; };
+    auto blocked = [&](std::size_t f, int k) { return blocked_edge(r.mesh.edges[f][k]); };
+    SVI::Propagation<St_mesh, Fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
+    propagation.run();
+    for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+      r.cuts.push_back(propagation.candidates[f].size() > 1 ? SVI::Face_cutter(propagation.candidates[f]).cut() : SVI::Face_cut());
+    for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+      r.cuts[f].whole_face = (propagation.candidates[f].size() == 1);
+
+    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
+    std::size_t broken = 0, quick_broken = 0;
+    std::vector<std::pair<std::size_t, std::size_t> > orphans, quick_orphans;
+    std::vector<std::size_t> regions, quick_regions;
+    const bool quick = check.run_from_links(located, blocked_edge, quick_broken, quick_orphans, quick_regions, false);
+    if(!check.run(located, blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
+    if(!quick) continue;
+    ++decided;
+    CHECK(quick_broken == broken);
+    CHECK(quick_regions == regions);
+    CHECK(quick_orphans == orphans);
+    with_broken += (broken > 0);
+  }
+  // the trials must exercise it: most decide, and many of those have broken cells
+  CHECK(decided >= 30);
+  CHECK(with_broken >= 10);
 }

@@ -375,12 +375,15 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
     CGAL_precondition(i < number_of_sites());
     return m_data.cell_pieces[i];
   }
-  /// the sites whose cells share a boundary segment with the cell of `i`, ascending
+  /// the sites whose cells share a boundary segment with the cell of `i`, ascending; found
+  /// for all sites on the first call (a pass over the cells' pieces), not by the construction
   /// \pre `i < number_of_sites()`
   const std::vector<std::size_t>& neighbors(std::size_t i) const
   {
     CGAL_precondition(i < number_of_sites());
-    return m_data.neighbors[i];
+    if(m_neighbors.size() != number_of_sites())
+      m_neighbors = Surface_voronoi::internal::site_neighbors(*m_data.mesh, m_data.partition, number_of_sites());
+    return m_neighbors[i];
   }
   /// the area no site reaches (components without sites, regions closed off by breaklines)
   double unreached_area() const { return m_data.statistics.unreached_area; }
@@ -574,6 +577,7 @@ private:
   Geom_traits m_traits;
   Data m_data;
   mutable std::vector<Point_3> m_centroids;
+  mutable std::vector<std::vector<std::size_t> > m_neighbors;
 };
 
 } // namespace CGAL

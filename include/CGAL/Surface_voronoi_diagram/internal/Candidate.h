@@ -33,7 +33,19 @@ namespace internal {
 /// face's corner order.
 struct Candidate
 {
+  /// `from_edge` of a field that started in its face (the site's own face)
+  static constexpr std::uint8_t at_site = 3;
+
+  Candidate() = default;
+  Candidate(std::uint32_t s, const std::array<double, 3>& v, std::uint8_t from = at_site)
+    : site(s), from_edge(from), value(v)
+  {}
+
   std::uint32_t site;
+  // The local edge of the face across which the propagation brought this field (from the
+  // site's candidate in the neighbour there, admitted before this one), or `at_site`: the
+  // check of the cells follows these links back to the sites (Symbolic_cell_check.h).
+  std::uint8_t from_edge = at_site;
   std::array<double, 3> value;
 };
 

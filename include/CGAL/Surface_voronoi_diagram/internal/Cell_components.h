@@ -181,6 +181,31 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
   return cc;
 }
 
+/// The sites whose cells share a piece edge with each site's cell, ascending, from the
+/// stitched partition. Computed on demand: the construction gathers no neighbours, since most
+/// uses of a diagram (Lloyd's steps, the outputs) never ask.
+template <class TriangleMesh>
+std::vector<std::vector<std::size_t> > site_neighbors(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition,
+                                                      std::size_t number_of_sites)
+{
+  std::vector<std::vector<std::size_t> > out(number_of_sites);
+  if(partition.pieces.empty()) return out;   // a cancelled construction
+  for_each_piece_adjacency(mesh, partition, 0, mesh.number_of_faces(), [&](std::size_t p, std::size_t q, std::size_t) {
+    const std::size_t a = partition.pieces[p].site, b = partition.pieces[q].site;
+    if(a != b && a != no_site && b != no_site)
+    {
+      out[a].push_back(b);
+      out[b].push_back(a);
+    }
+  });
+  for(std::vector<std::size_t>& list : out)
+  {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return out;
+}
+
 } // namespace internal
 } // namespace Surface_voronoi
 } // namespace CGAL

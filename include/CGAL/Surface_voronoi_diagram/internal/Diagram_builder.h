@@ -47,7 +47,7 @@ struct Builder_settings
   std::size_t max_repair_rounds = 100;
   bool has_weights = false;
   bool parallel = false;   // cutting, stitching and checking in concurrent chunks (TBB)
-  bool cells_only = false; // no neighbours and no vertex owners (Lloyd's diagrams)
+  bool cells_only = false; // no vertex owners (Lloyd's diagrams)
 };
 
 template <class TriangleMesh, class Fields>
@@ -100,8 +100,6 @@ public:
     auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
     std::size_t round = 0;
     bool first_check_done = false, decided_on_cuts = false;
-    std::vector<std::pair<std::size_t, std::size_t> > site_pairs;
-    std::vector<std::pair<std::size_t, std::size_t> >* wanted_pairs = m_settings.cells_only ? nullptr : &site_pairs;
     std::vector<std::size_t> regions_of_site;
     // a repair round, once the banned fields' faces are in `dirty`
     auto repair_round = [&]() {
@@ -117,8 +115,11 @@ public:
       std::vector<std::pair<std::size_t, std::size_t> > orphans;
       for(;; ++round)
       {
+        // the first round follows the propagation's links (in proportion to what is broken)
         std::size_t broken = 0;
-        if(!check.run(d.sites, blocked_edge, broken, orphans, wanted_pairs, &regions_of_site, m_settings.parallel)) break;
+        if(!(round == 0 && check.run_from_links(d.sites, blocked_edge, broken, orphans, regions_of_site, m_settings.parallel))
+           && !check.run(d.sites, blocked_edge, broken, orphans, nullptr, &regions_of_site, m_settings.parallel))
+          break;
         if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
         first_check_done = true;
         decided_on_cuts = (broken == 0);
@@ -145,7 +146,7 @@ public:
         break;
       }
       decided_on_cuts = false;   // from here on, the stitched partition decides
-      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, wanted_pairs, m_settings.parallel);
+      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, nullptr, m_settings.parallel);
       regions_of_site.assign(n, 0);
       for(std::size_t i = 0; i < n; ++i) regions_of_site[i] = components.site_components[i].size();
       const std::size_t broken = number_of_broken_cells(components);
@@ -160,7 +161,7 @@ public:
       if(!round_done()) return false;
     }
     d.candidates = std::move(propagation.candidates);
-    summarize(regions_of_site, site_pairs);
+    summarize(regions_of_site);
     m_timer.stop("repair");
     return progress(1.);
   }
@@ -201,7 +202,7 @@ private:
     });
   }
 
-  void summarize(const std::vector<std::size_t>& regions_of_site, const std::vector<std::pair<std::size_t, std::size_t> >& site_pairs)
+  void summarize(const std::vector<std::size_t>& regions_of_site)
   {
     Diagram_data<TriangleMesh>& d = m_data;
     Diagram_statistics& s = d.statistics;
@@ -236,7 +237,6 @@ private:
     s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
     s.welded_vertices = d.partition.welded_vertices;
     s.inserted_vertices = d.partition.inserted_vertices;
-    d.neighbors.assign(n, std::vector<std::size_t>());
     if(m_settings.cells_only) return;
 
     // vertex owners: the lowest (value, site) among the candidates of the faces around
@@ -253,18 +253,6 @@ private:
             best[v] = x.value[k];
           }
         }
-
-    // neighbours: sites on both sides of a piece edge
-    for(const std::pair<std::size_t, std::size_t>& ab : site_pairs)
-    {
-      const std::size_t a = ab.first, b = ab.second;
-      if(a != no_site && b != no_site) { d.neighbors[a].push_back(b); d.neighbors[b].push_back(a); }
-    }
-    for(std::vector<std::size_t>& list : d.neighbors)
-    {
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-    }
   }
 
   Diagram_data<TriangleMesh>& m_data;

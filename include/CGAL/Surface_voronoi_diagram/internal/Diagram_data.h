@@ -45,7 +45,6 @@ struct Diagram_data
   std::vector<double> cell_area;
   std::vector<std::size_t> cell_pieces;
   std::vector<std::size_t> vertex_site;          // owner of each mesh vertex
-  std::vector<std::vector<std::size_t> > neighbors;
   Diagram_statistics statistics;
   bool cancelled = false;
 
@@ -57,7 +56,6 @@ struct Diagram_data
     cell_area.assign(sites.size(), 0.);
     cell_pieces.assign(sites.size(), 0);
     vertex_site.assign(mesh ? mesh->number_of_vertices() : 0, no_site);
-    neighbors.assign(sites.size(), std::vector<std::size_t>());
     statistics = Diagram_statistics();
     statistics.sites = sites.size();
   }

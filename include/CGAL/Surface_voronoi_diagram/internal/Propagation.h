@@ -67,7 +67,7 @@ public:
     m_offers.assign(m_mesh.number_of_faces(), Offers());
     m_offered.reset(m_mesh.number_of_faces() / 8 + 16);
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      offer(static_cast<std::uint32_t>(i), m_site_faces[i]);
+      offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     drain(no_ban, nullptr);
     for(Candidate_list& list : candidates) clean_candidate_list(list);
@@ -98,12 +98,12 @@ public:
         const std::size_t g = m_mesh.neighbors[f][k];
         if(g == Mesh::none || m_blocked(f, k)) continue;
         for(const Candidate& x : candidates[g])
-          if(!banned(x.site, f)) offer(x.site, f);
+          if(!banned(x.site, f)) offer(x.site, f, static_cast<std::uint8_t>(k));
       }
     }
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
-        offer(static_cast<std::uint32_t>(i), m_site_faces[i]);
+        offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
     drain(banned, &is_touched);
     touched.clear();
     for(std::size_t f = 0; f < is_touched.size(); ++f)
@@ -123,6 +123,7 @@ private:
     std::uint32_t site;
     std::uint32_t face;
     std::uint32_t slot;
+    std::uint8_t from_edge;   // the candidate's (in the padding: the event stays 24 bytes)
   };
   // The sites offered to a face in its current epoch: the first few inline (a face is
   // offered a handful), the others in a hash table keyed by (site, face, epoch).
@@ -167,21 +168,30 @@ private:
     return value;
   }
 
-  // offers the field of `site` to face `f`, once per (site, face) and epoch; `from`, if given,
-  // is the site's candidate on a neighbouring face `from_face`, whose values at the two shared
-  // corners are taken instead of computed again (the same numbers: the field is a function of
-  // the vertex), which spares two of three lookups of a vertex's coordinates
-  void offer(std::uint32_t site, std::size_t f, const Candidate* from = nullptr, std::size_t from_face = 0)
+  // Offers the field of `site` to face `f`, once per (site, face) and epoch, as brought across
+  // local edge `from_edge` of f. `from`, if given, is the site's candidate on the neighbouring
+  // face `from_face`, whose values at the two shared corners are taken instead of computed
+  // again (the same numbers: the field is a function of the vertex), which spares two of
+  // three lookups of a vertex's coordinates; the edge is then the one opposite the corner not
+  // shared.
+  void offer(std::uint32_t site, std::size_t f, std::uint8_t from_edge, const Candidate* from = nullptr,
+             std::size_t from_face = 0)
   {
     if(!mark_offered(site, f)) return;
-    Candidate x = { site, {{ 0., 0., 0. }} };
+    Candidate x(site, {{ 0., 0., 0. }}, from_edge);
     if(from)
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t v = m_mesh.triangles[f][k];
         int c = 0;
         while(c < 3 && m_mesh.triangles[from_face][c] != v) ++c;
-        x.value[k] = (c < 3) ? from->value[c] : m_fields.value(site, v);
+        if(c < 3)
+          x.value[k] = from->value[c];
+        else
+        {
+          x.value[k] = m_fields.value(site, v);
+          x.from_edge = static_cast<std::uint8_t>((k + 1) % 3);
+        }
       }
     else
       x.value = field_values(site, f);
@@ -200,7 +210,8 @@ private:
       m_free_slots.pop_back();
       m_values[slot] = x.value;
     }
-    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f), slot });
+    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f), slot,
+                        x.from_edge });
   }
 
   template <class Banned>
@@ -211,7 +222,7 @@ private:
       const Event e = m_queue.top();
       m_queue.pop();
       ++statistics.events;
-      const Candidate x = { e.site, m_values[e.slot] };
+      const Candidate x(e.site, m_values[e.slot], e.from_edge);
       m_free_slots.push_back(e.slot);
       Candidate_list& list = candidates[e.face];
       bool pruned = false;
@@ -229,7 +240,7 @@ private:
       {
         const std::size_t g = m_mesh.neighbors[e.face][k];
         if(g == Mesh::none || m_blocked(e.face, k) || banned(e.site, g)) continue;
-        offer(e.site, g, &x, e.face);
+        offer(e.site, g, Candidate::at_site, &x, e.face);
       }
     }
   }

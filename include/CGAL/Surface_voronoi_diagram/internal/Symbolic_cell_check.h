@@ -30,6 +30,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/unite_face_by_face.h>
 
 #include <boost/container/small_vector.hpp>
@@ -121,7 +122,223 @@ public:
     return true;
   }
 
+  /// The check of the first round, right after the first propagation (`Propagation::run()`),
+  /// in proportion to what is broken. Each field came from the site's candidate in one
+  /// neighbouring face, admitted before it (`Candidate::from_edge`), so these links lead back
+  /// to the sites' faces. A piece is rooted when every piece on its way back overlaps the
+  /// next one on their shared edge; a rooted piece is connected to its site's piece in the
+  /// site's face. A piece whose link does not hold (a "break": its field came from a face
+  /// where the site has no piece, or one it does not overlap) that a short search through
+  /// overlaps across edges (not breaklines) connects to a rooted piece is fine too; a site
+  /// with a break that does not connect so is a suspect, and only the suspects' pieces are
+  /// searched whole: their regions, and the pieces outside the region of the site's face.
+  /// Gives what `run()` gives (without the neighbour pairs); false where `run()` must decide:
+  /// a face met an exact tie, a suspect has no piece in its own face, or the breaks are many.
+  /// Not to be called after repair rounds, whose refilled faces break the order of the links.
+  template <class Blocked_edge>
+  bool run_from_links(const std::vector<Site>& sites, const Blocked_edge& blocked_edge, std::size_t& broken,
+                      std::vector<std::pair<std::size_t, std::size_t> >& orphans,
+                      std::vector<std::size_t>& regions_of_site, bool parallel) const
+  {
+    const std::size_t nf = m_mesh.number_of_faces(), n = sites.size();
+    const std::size_t chunk = 4096;
+    std::vector<std::vector<Piece_ref> > breaks_of_chunk(number_of_chunks(nf, chunk));
+    std::vector<std::uint8_t> tie(breaks_of_chunk.size(), 0);
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        if(m_cuts[f].degenerate) tie[c] = 1;
+        for(std::size_t local = 0; local < pieces_in_face(f); ++local)
+          if(!joined_to_parent(f, local))
+            breaks_of_chunk[c].push_back(Piece_ref{ f, local });
+      }
+    });
+    std::vector<Piece_ref> breaks;   // in face order, as binary searches want
+    for(std::size_t c = 0; c < breaks_of_chunk.size(); ++c)
+    {
+      if(tie[c]) return false;
+      breaks.insert(breaks.end(), breaks_of_chunk[c].begin(), breaks_of_chunk[c].end());
+    }
+    if(breaks.size() > 4096) return false;
+    std::vector<std::uint8_t> suspect(n, 0);
+    bool any_suspect = false;
+    for(const Piece_ref& x : breaks)
+    {
+      const std::uint32_t site = candidate_of(x.face, x.local).site;
+      if(!suspect[site] && !reaches_rooted_piece(x, breaks, blocked_edge)) suspect[site] = 1, any_suspect = true;
+    }
+    regions_of_site.assign(n, 0);
+    for(std::size_t i = 0; i < n; ++i)
+      regions_of_site[i] = (piece_in_face(sites[i].face, static_cast<std::uint32_t>(i)) != no_site) ? 1 : 0;
+    broken = 0;
+    orphans.clear();
+    if(!any_suspect) return true;
+
+    // the suspects' pieces, in face order, and their regions
+    std::vector<std::vector<Piece_ref> > pieces_of(n);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::size_t local = 0; local < pieces_in_face(f); ++local)
+      {
+        const std::uint32_t site = candidate_of(f, local).site;
+        if(suspect[site]) pieces_of[site].push_back(Piece_ref{ f, local });
+      }
+    std::vector<std::uint8_t> is_broken(n, 0);
+    std::vector<std::vector<std::uint8_t> > in_own_region(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(!suspect[i]) continue;
+      const std::vector<Piece_ref>& pieces = pieces_of[i];
+      const std::size_t own = piece_in_face(sites[i].face, static_cast<std::uint32_t>(i));
+      if(own == no_site) return false;   // a weighted site outside its cell: the largest region is kept, by area
+      std::vector<std::size_t> region(pieces.size(), no_site);
+      std::size_t regions = 0;
+      auto flood = [&](std::size_t first) {
+        std::vector<std::size_t> stack(1, first);
+        region[first] = regions;
+        while(!stack.empty())
+        {
+          const Piece_ref p = pieces[stack.back()];
+          stack.pop_back();
+          for(int k = 0; k < 3; ++k)
+          {
+            const std::size_t g = m_mesh.neighbors[p.face][k];
+            if(g == Mesh::none || blocked_edge(m_mesh.edges[p.face][k])) continue;
+            const std::size_t q = piece_in_face(g, static_cast<std::uint32_t>(i));
+            if(q == no_site || !overlap(p.face, p.local, k, g, q)) continue;
+            const std::size_t j = std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ g, q }) - pieces.begin());
+            if(region[j] == no_site) { region[j] = regions; stack.push_back(j); }
+          }
+        }
+        ++regions;
+      };
+      flood(std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ sites[i].face, own }) - pieces.begin()));
+      for(std::size_t j = 0; j < pieces.size(); ++j)
+        if(region[j] == no_site) flood(j);
+      regions_of_site[i] = regions;
+      if(regions > 1)
+      {
+        is_broken[i] = 1;
+        ++broken;
+        in_own_region[i].resize(pieces.size());
+        for(std::size_t j = 0; j < pieces.size(); ++j) in_own_region[i][j] = (region[j] == 0);
+      }
+    }
+    // the pieces outside their site's own region, in face order
+    std::vector<std::size_t> next(n, 0);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::size_t local = 0; local < pieces_in_face(f); ++local)
+      {
+        const std::uint32_t site = candidate_of(f, local).site;
+        if(!is_broken[site]) continue;
+        if(!in_own_region[site][next[site]++]) orphans.emplace_back(site, f);
+      }
+    return true;
+  }
+
 private:
+  // The index in face g's cut of the piece of `site`, or no_site.
+  std::size_t piece_in_face(std::size_t g, std::uint32_t site) const
+  {
+    const Face_cut& cut = m_cuts[g];
+    const Candidate_list& list = m_candidates[g];
+    if(list.empty()) return no_site;
+    if(cut.whole_face) return list[0].site == site ? 0 : no_site;
+    for(std::size_t local = 0; local < cut.pieces.size(); ++local)
+      if(list[cut.pieces[local].candidate].site == site) return local;
+    return no_site;
+  }
+
+  // A piece, as its face and its index in the face's cut.
+  struct Piece_ref
+  {
+    std::size_t face, local;
+    bool operator==(const Piece_ref& o) const { return face == o.face && local == o.local; }
+    bool operator<(const Piece_ref& o) const { return face < o.face || (face == o.face && local < o.local); }
+  };
+
+  // The number of pieces of face f's cut (a face nobody reached has none here).
+  std::size_t pieces_in_face(std::size_t f) const
+  {
+    if(m_candidates[f].empty()) return 0;
+    return m_cuts[f].whole_face ? 1 : m_cuts[f].pieces.size();
+  }
+
+  const Candidate& candidate_of(std::size_t f, std::size_t local) const
+  {
+    const Face_cut& cut = m_cuts[f];
+    return m_candidates[f][cut.whole_face ? 0 : cut.pieces[local].candidate];
+  }
+
+  // Whether pieces (f, a) and (g, b) overlap on the edge between f and g (local edge k of f).
+  bool overlap(std::size_t f, std::size_t a, int k, std::size_t g, std::size_t b) const
+  {
+    int kg = 0;
+    while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
+    double lo_f, hi_f, lo_g, hi_g;
+    return kg < 3 && segment_on_edge(f, a, k, lo_f, hi_f) && segment_on_edge(g, b, kg, lo_g, hi_g)
+           && (std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g);
+  }
+
+  // In `up`, the piece of the same site in the face the field of piece (f, local) came from,
+  // if the two overlap (JOINED); AT_SITE for a field that started in f.
+  enum Link { JOINED, BROKEN, AT_SITE };
+  Link parent(std::size_t f, std::size_t local, Piece_ref& up) const
+  {
+    const Candidate& x = candidate_of(f, local);
+    if(x.from_edge == Candidate::at_site) return AT_SITE;
+    const int k = x.from_edge;
+    const std::size_t g = m_mesh.neighbors[f][k];
+    if(g == Mesh::none) return BROKEN;
+    const std::size_t q = piece_in_face(g, x.site);
+    if(q == no_site || !overlap(f, local, k, g, q)) return BROKEN;
+    up = Piece_ref{ g, q };
+    return JOINED;
+  }
+
+  bool joined_to_parent(std::size_t f, std::size_t local) const
+  {
+    Piece_ref up;
+    return parent(f, local, up) != BROKEN;
+  }
+
+  // Whether the way back from piece p reaches its site's face without a break.
+  bool is_rooted(Piece_ref p, const std::vector<Piece_ref>& breaks) const
+  {
+    for(std::size_t steps = 0; steps <= m_mesh.number_of_faces(); ++steps)
+    {
+      if(std::binary_search(breaks.begin(), breaks.end(), p)) return false;
+      const Link link = parent(p.face, p.local, p);
+      if(link == AT_SITE) return true;
+      if(link == BROKEN) return false;
+    }
+    return false;
+  }
+
+  // Whether a short search through the pieces of the break's site that overlap across edges
+  // (not breaklines) finds a rooted one.
+  template <class Blocked_edge>
+  bool reaches_rooted_piece(const Piece_ref& start, const std::vector<Piece_ref>& breaks, const Blocked_edge& blocked_edge) const
+  {
+    const std::uint32_t site = candidate_of(start.face, start.local).site;
+    boost::container::small_vector<Piece_ref, 64> seen;
+    seen.push_back(start);
+    for(std::size_t next = 0; next < seen.size(); ++next)
+    {
+      const Piece_ref p = seen[next];
+      if(next > 0 && is_rooted(p, breaks)) return true;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t g = m_mesh.neighbors[p.face][k];
+        if(g == Mesh::none || blocked_edge(m_mesh.edges[p.face][k])) continue;
+        const std::size_t q = piece_in_face(g, site);
+        if(q == no_site || !overlap(p.face, p.local, k, g, q)) continue;
+        const Piece_ref r{ g, q };
+        if(seen.size() < 64 && std::find(seen.begin(), seen.end(), r) == seen.end()) seen.push_back(r);
+      }
+    }
+    return false;
+  }
+
   // Pieces numbered face by face: a face nobody reached is one piece of no site. False if a
   // face met an exact tie.
   bool number_pieces()
