@@ -148,6 +148,8 @@ public:
       for(std::size_t f = begin; f < end; ++f)
       {
         if(m_cuts[f].degenerate) tie[c] = 1;
+        // a face of one candidate keeps its edges whole (see joined_to_parent()): most faces
+        if(m_cuts[f].whole_face) continue;
         for(std::size_t local = 0; local < pieces_in_face(f); ++local)
           if(!joined_to_parent(f, local))
             breaks_of_chunk[c].push_back(Piece_ref{ f, local });
@@ -295,10 +297,19 @@ private:
     return JOINED;
   }
 
+  // Whether the link of piece (f, local) holds, read on f's side alone. After the first
+  // propagation, the fields of two faces across an edge that is not a breakline have one lower
+  // envelope along it: each face was offered every candidate of the other, and one it does not
+  // keep is dominated there by one it keeps, so lies above it along the edge. The envelope's
+  // pieces are decided exactly (a tie flags the face degenerate), so a site's stretch of the
+  // edge, and the numbers that place it, are the same on both sides: the piece overlaps the
+  // one its field came from exactly when its own stretch has positive length.
   bool joined_to_parent(std::size_t f, std::size_t local) const
   {
-    Piece_ref up;
-    return parent(f, local, up) != BROKEN;
+    const Candidate& x = candidate_of(f, local);
+    if(x.from_edge == Candidate::at_site) return true;
+    double lo, hi;
+    return segment_on_edge(f, local, x.from_edge, lo, hi) && lo < hi;
   }
 
   // Whether the way back from piece p reaches its site's face without a break.
