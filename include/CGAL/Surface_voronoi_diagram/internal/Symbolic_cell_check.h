@@ -201,15 +201,10 @@ public:
         {
           const Piece_ref p = pieces[stack.back()];
           stack.pop_back();
-          for(int k = 0; k < 3; ++k)
-          {
-            const std::size_t g = m_mesh.neighbors[p.face][k];
-            if(g == Mesh::none || blocked_edge(m_mesh.edges[p.face][k])) continue;
-            const std::size_t q = piece_in_face(g, static_cast<std::uint32_t>(i));
-            if(q == no_site || !overlap(p.face, p.local, k, g, q)) continue;
-            const std::size_t j = std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ g, q }) - pieces.begin());
+          for_each_joined_neighbour(p, static_cast<std::uint32_t>(i), blocked_edge, [&](const Piece_ref& r) {
+            const std::size_t j = std::size_t(std::lower_bound(pieces.begin(), pieces.end(), r) - pieces.begin());
             if(region[j] == no_site) { region[j] = regions; stack.push_back(j); }
-          }
+          });
         }
         ++regions;
       };
@@ -250,6 +245,14 @@ private:
     return no_site;
   }
 
+  // The local edge of face g shared with its neighbour f, or 3 if they share none.
+  int edge_towards(std::size_t g, std::size_t f) const
+  {
+    int k = 0;
+    while(k < 3 && m_mesh.neighbors[g][k] != f) ++k;
+    return k;
+  }
+
   // A piece, as its face and its index in the face's cut.
   struct Piece_ref
   {
@@ -274,8 +277,7 @@ private:
   // Whether pieces (f, a) and (g, b) overlap on the edge between f and g (local edge k of f).
   bool overlap(std::size_t f, std::size_t a, int k, std::size_t g, std::size_t b) const
   {
-    int kg = 0;
-    while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
+    const int kg = edge_towards(g, f);
     double lo_f, hi_f, lo_g, hi_g;
     return kg < 3 && segment_on_edge(f, a, k, lo_f, hi_f) && segment_on_edge(g, b, kg, lo_g, hi_g)
            && (std::max)(lo_f, lo_g) < (std::min)(hi_f, hi_g);
@@ -325,6 +327,20 @@ private:
     return false;
   }
 
+  // Calls `visit(r)` for every piece r of `site` in a face across an edge of piece p that is
+  // not a breakline, where the two overlap: the pieces p is connected to directly.
+  template <class Blocked_edge, class Visit>
+  void for_each_joined_neighbour(const Piece_ref& p, std::uint32_t site, const Blocked_edge& blocked_edge, const Visit& visit) const
+  {
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t g = m_mesh.neighbors[p.face][k];
+      if(g == Mesh::none || blocked_edge(m_mesh.edges[p.face][k])) continue;
+      const std::size_t q = piece_in_face(g, site);
+      if(q != no_site && overlap(p.face, p.local, k, g, q)) visit(Piece_ref{ g, q });
+    }
+  }
+
   // Whether a short search through the pieces of the break's site that overlap across edges
   // (not breaklines) finds a rooted one.
   template <class Blocked_edge>
@@ -337,15 +353,9 @@ private:
     {
       const Piece_ref p = seen[next];
       if(next > 0 && is_rooted(p, breaks)) return true;
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t g = m_mesh.neighbors[p.face][k];
-        if(g == Mesh::none || blocked_edge(m_mesh.edges[p.face][k])) continue;
-        const std::size_t q = piece_in_face(g, site);
-        if(q == no_site || !overlap(p.face, p.local, k, g, q)) continue;
-        const Piece_ref r{ g, q };
+      for_each_joined_neighbour(p, site, blocked_edge, [&](const Piece_ref& r) {
         if(seen.size() < 64 && std::find(seen.begin(), seen.end(), r) == seen.end()) seen.push_back(r);
-      }
+      });
     }
     return false;
   }
@@ -448,8 +458,7 @@ private:
       meet(pf, pg, connect, out);
       return;
     }
-    int kg = 0;
-    while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
+    const int kg = edge_towards(g, f);
     if(kg == 3) return;
     // each side's stretches on the edge, computed once
     struct Stretch { std::size_t piece; double lo, hi; };
