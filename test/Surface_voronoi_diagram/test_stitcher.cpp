@@ -20,6 +20,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <set>
 #include <vector>
@@ -502,11 +503,55 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
   CHECK(with_broken >= 20);
 }
 
+namespace {
+
+// Euclidean fields of a few sites at face centroids of a steeply folded grid: they reach
+// across the folds and leave cells in several pieces.
+struct Folded_grid_fields
+{
+  const std::vector<std::vector<double> >* field;
+  double value(std::size_t site, std::size_t v) const { return (*field)[site][v]; }
+};
+
+void folded_grid_sites(double amplitude, std::size_t number_of_sites, std::mt19937& rng, St_run& r,
+                       std::vector<SVI::Site>& located, std::vector<std::size_t>& site_faces)
+{
+  r.surface = st_grid(14, [&](int i, int j) { return amplitude * std::sin(1.3 * i) * std::cos(0.4 * j); });
+  r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
+  std::uniform_int_distribution<std::size_t> any_face(0, r.mesh.number_of_faces() - 1);
+  located.assign(number_of_sites, SVI::Site());
+  site_faces.clear();
+  for(std::size_t s = 0; s < located.size(); ++s)
+  {
+    located[s].face = any_face(rng);
+    site_faces.push_back(located[s].face);
+    const auto& t = r.mesh.triangles[located[s].face];
+    std::array<double, 3> c = {{ 0., 0., 0. }};
+    for(int k = 0; k < 3; ++k)
+      for(int j = 0; j < 3; ++j) c[j] += r.mesh.points[t[k]][j] / 3.;
+    std::vector<double> f;
+    for(const auto& p : r.mesh.points) f.push_back(CGAL::square(p[0] - c[0]) + CGAL::square(p[1] - c[1]) + CGAL::square(p[2] - c[2]));
+    r.field.push_back(f);
+  }
+}
+
+void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<std::size_t>& faces, std::vector<SVI::Face_cut>& cuts)
+{
+  for(std::size_t f : faces)
+  {
+    cuts[f] = candidates[f].size() > 1 ? SVI::Face_cutter(candidates[f]).cut() : SVI::Face_cut();
+    cuts[f].whole_face = (candidates[f].size() == 1);
+  }
+}
+
+bool folded_grid_blocked_edge(std::size_t e) { return e % 37 == 0; }
+
+} // namespace
+
 // The first round's check (Symbolic_cell_check::run_from_links(): the propagation's links
 // back to the sites, and a whole search of the suspects' pieces only) against the full check
-// on the cuts, its oracle, on real propagations over a steeply folded grid, where Euclidean
-// fields reach across the folds and leave cells in several pieces: where it decides, the same
-// broken cells, regions per site and orphans, in the same order.
+// on the cuts, its oracle, on real propagations over a steeply folded grid: where it decides,
+// the same broken cells, regions per site and orphans, in the same order.
 TEST_CASE("cell check: the first round, from the propagation's links, finds what the full check finds", "[stitcher][repair]")
 {
   std::mt19937 rng(5);
@@ -514,46 +559,25 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
   for(int trial = 0; trial < 40; ++trial)
   {
     INFO("trial " << trial);
-    const double amplitude = 1.5 + 0.1 * trial;
-    const St_mesh m = st_grid(14, [&](int i, int j) { return amplitude * std::sin(1.3 * i) * std::cos(0.4 * j); });
     St_run r;
-    r.surface = m;
-    r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
-    std::uniform_int_distribution<std::size_t> any_face(0, r.mesh.number_of_faces() - 1);
-    std::vector<SVI::Site> located(6 + trial % 10);
+    std::vector<SVI::Site> located;
     std::vector<std::size_t> site_faces;
-    for(std::size_t s = 0; s < located.size(); ++s)
-    {
-      located[s].face = any_face(rng);
-      site_faces.push_back(located[s].face);
-      const auto& t = r.mesh.triangles[located[s].face];
-      std::array<double, 3> c = {{ 0., 0., 0. }};
-      for(int k = 0; k < 3; ++k)
-        for(int j = 0; j < 3; ++j) c[j] += r.mesh.points[t[k]][j] / 3.;
-      std::vector<double> f;
-      for(const auto& p : r.mesh.points) f.push_back(CGAL::square(p[0] - c[0]) + CGAL::square(p[1] - c[1]) + CGAL::square(p[2] - c[2]));
-      r.field.push_back(f);
-    }
-    struct Fields
-    {
-      const std::vector<std::vector<double> >* field;
-      double value(std::size_t site, std::size_t v) const { return (*field)[site][v]; }
-    } fields{ &r.field };
-    auto blocked_edge = [](std::size_t e) { return e % 37 == 0; };
-    auto blocked = [&](std::size_t f, int k) { return blocked_edge(r.mesh.edges[f][k]); };
-    SVI::Propagation<St_mesh, Fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
+    folded_grid_sites(1.5 + 0.1 * trial, 6 + trial % 10, rng, r, located, site_faces);
+    const Folded_grid_fields fields{ &r.field };
+    auto blocked = [&](std::size_t f, int k) { return folded_grid_blocked_edge(r.mesh.edges[f][k]); };
+    SVI::Propagation<St_mesh, Folded_grid_fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
     propagation.run();
-    for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
-      r.cuts.push_back(propagation.candidates[f].size() > 1 ? SVI::Face_cutter(propagation.candidates[f]).cut() : SVI::Face_cut());
-    for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
-      r.cuts[f].whole_face = (propagation.candidates[f].size() == 1);
+    std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
+    std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
+    r.cuts.resize(all_faces.size());
+    cut_listed_faces(propagation.candidates, all_faces, r.cuts);
 
     SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
     std::size_t broken = 0, quick_broken = 0;
     std::vector<std::pair<std::size_t, std::size_t> > orphans, quick_orphans;
     std::vector<std::size_t> regions, quick_regions;
-    const bool quick = check.run_from_links(located, blocked_edge, quick_broken, quick_orphans, quick_regions, false);
-    if(!check.run(located, blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
+    const bool quick = check.run_from_links(located, folded_grid_blocked_edge, quick_broken, quick_orphans, quick_regions, false);
+    if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
     if(!quick) continue;
     ++decided;
     CHECK(quick_broken == broken);
@@ -564,4 +588,72 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
   // the trials must exercise it: most decide, and many of those have broken cells
   CHECK(decided >= 30);
   CHECK(with_broken >= 10);
+}
+
+// The later rounds' check (Symbolic_cell_check::run_on_sites(): only the sites on the faces a
+// repair round touched, before or after, searched whole; the others keep their count) against
+// the full check, round after round of the repair, on the same folded grids.
+TEST_CASE("cell check: a later round, on the sites the repair changed, finds what the full check finds", "[stitcher][repair]")
+{
+  std::mt19937 rng(11);
+  int rounds_compared = 0, with_broken = 0, partial = 0;
+  for(int trial = 0; trial < 120; ++trial)
+  {
+    INFO("trial " << trial);
+    St_run r;
+    std::vector<SVI::Site> located;
+    std::vector<std::size_t> site_faces;
+    folded_grid_sites(1.5 + 0.03 * trial, 8 + trial % 25, rng, r, located, site_faces);
+    const Folded_grid_fields fields{ &r.field };
+    auto blocked = [&](std::size_t f, int k) { return folded_grid_blocked_edge(r.mesh.edges[f][k]); };
+    SVI::Propagation<St_mesh, Folded_grid_fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
+    propagation.run();
+    std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
+    std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
+    r.cuts.resize(all_faces.size());
+    cut_listed_faces(propagation.candidates, all_faces, r.cuts);
+
+    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
+    SVI::Banned_fields banned(all_faces.size());
+    auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
+    std::size_t broken = 0;
+    std::vector<std::pair<std::size_t, std::size_t> > orphans;
+    std::vector<std::size_t> regions;
+    if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;
+    for(int round = 1; round <= 6 && broken > 0; ++round)
+    {
+      INFO("round " << round);
+      std::vector<std::size_t> dirty, touched;
+      for(const auto& x : orphans)
+      {
+        banned.insert(x.first, x.second);
+        if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
+      }
+      std::vector<std::uint32_t> sites_before;
+      propagation.repropagate(dirty, is_banned, touched, &sites_before);
+      cut_listed_faces(propagation.candidates, touched, r.cuts);
+      std::vector<std::uint8_t> affected(located.size(), 0);
+      for(std::uint32_t s : sites_before) affected[s] = 1;
+      for(std::size_t f : touched)
+        for(const SVI::Candidate& x : propagation.candidates[f]) affected[x.site] = 1;
+      partial += (std::count(affected.begin(), affected.end(), 1) < std::ptrdiff_t(located.size()));
+
+      std::size_t local_broken = 0;
+      std::vector<std::pair<std::size_t, std::size_t> > local_orphans;
+      std::vector<std::size_t> local_regions = regions;
+      const bool local = check.run_on_sites(located, touched, affected, folded_grid_blocked_edge, local_broken, local_orphans, local_regions);
+      if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) break;
+      if(!local) break;
+      ++rounds_compared;
+      with_broken += (broken > 0);
+      CHECK(local_broken == broken);
+      CHECK(local_regions == regions);
+      CHECK(local_orphans == orphans);
+    }
+  }
+  // the repair must run: many rounds compared, some still broken after a round, and the
+  // rounds must leave some sites out of the search
+  CHECK(rounds_compared >= 40);
+  CHECK(with_broken >= 2);
+  CHECK(partial >= 40);
 }

@@ -101,10 +101,18 @@ public:
     std::size_t round = 0;
     bool first_check_done = false, decided_on_cuts = false;
     std::vector<std::size_t> regions_of_site;
+    // the sites a repair round can have changed: those on the faces it touched, before or after
+    std::vector<std::uint32_t> sites_before;
+    std::vector<std::uint8_t> affected;
     // a repair round, once the banned fields' faces are in `dirty`
     auto repair_round = [&]() {
-      propagation.repropagate(dirty, is_banned, touched);
+      sites_before.clear();
+      propagation.repropagate(dirty, is_banned, touched, &sites_before);
       cut_faces(propagation.candidates, &touched);
+      affected.assign(n, 0);
+      for(std::uint32_t s : sites_before) affected[s] = 1;
+      for(std::size_t f : touched)
+        for(const Candidate& x : propagation.candidates[f]) affected[x.site] = 1;
       d.statistics.repair_rounds = round + 1;
       d.statistics.banned_fields = banned.size();
     };
@@ -115,10 +123,13 @@ public:
       std::vector<std::pair<std::size_t, std::size_t> > orphans;
       for(;; ++round)
       {
-        // the first round follows the propagation's links (in proportion to what is broken)
+        // in proportion to what is broken: the first round follows the propagation's links,
+        // the later ones search the sites a repair changed
         std::size_t broken = 0;
-        if(!(round == 0 && check.run_from_links(d.sites, blocked_edge, broken, orphans, regions_of_site, m_settings.parallel))
-           && !check.run(d.sites, blocked_edge, broken, orphans, nullptr, &regions_of_site, m_settings.parallel))
+        const bool decided = (round == 0)
+            ? check.run_from_links(d.sites, blocked_edge, broken, orphans, regions_of_site, m_settings.parallel)
+            : check.run_on_sites(d.sites, touched, affected, blocked_edge, broken, orphans, regions_of_site);
+        if(!decided && !check.run(d.sites, blocked_edge, broken, orphans, nullptr, &regions_of_site, m_settings.parallel))
           break;
         if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
         first_check_done = true;

@@ -75,14 +75,18 @@ public:
 
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
   /// `dirty` faces, whose lists are then refilled from their neighbours' candidates, and the
-  /// propagation goes on from there. `touched` receives every face whose list changed.
+  /// propagation goes on from there. `touched` receives every face whose list changed, and
+  /// `sites_before`, if given, the sites those lists held before (with repetitions).
   template <class Banned>
-  void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched)
+  void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched,
+                   std::vector<std::uint32_t>* sites_before = nullptr)
   {
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
+    m_sites_before = sites_before;
     for(std::size_t f : dirty)
     {
       Candidate_list& list = candidates[f];
+      if(!is_touched[f]) record_sites_before(f);
       list.erase(std::remove_if(list.begin(), list.end(), [&](const Candidate& x) { return banned(x.site, f); }),
                  list.end());
       CGAL_assertion(m_epoch[f] + 1 < max_epochs);
@@ -105,6 +109,7 @@ public:
       if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
         offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
     drain(banned, &is_touched);
+    m_sites_before = nullptr;
     touched.clear();
     for(std::size_t f = 0; f < is_touched.size(); ++f)
       if(is_touched[f])
@@ -214,6 +219,12 @@ private:
                         x.from_edge });
   }
 
+  void record_sites_before(std::size_t f)
+  {
+    if(m_sites_before)
+      for(const Candidate& x : candidates[f]) m_sites_before->push_back(x.site);
+  }
+
   template <class Banned>
   void drain(const Banned& banned, std::vector<std::uint8_t>* touched)
   {
@@ -233,9 +244,13 @@ private:
         ++statistics.pruned;
         continue;
       }
+      if(touched && !(*touched)[e.face])
+      {
+        record_sites_before(e.face);
+        (*touched)[e.face] = 1;
+      }
       list.push_back(x);
       ++statistics.admitted;
-      if(touched) (*touched)[e.face] = 1;
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t g = m_mesh.neighbors[e.face][k];
@@ -255,6 +270,7 @@ private:
   std::vector<std::uint32_t> m_free_slots;
   Flat_hash_table<Key_slot<std::uint64_t> > m_offered;
   std::priority_queue<Event, std::vector<Event>, Later> m_queue;
+  std::vector<std::uint32_t>* m_sites_before = nullptr;   // during repropagate()
 };
 
 } // namespace internal

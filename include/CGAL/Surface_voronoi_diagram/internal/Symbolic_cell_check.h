@@ -175,23 +175,56 @@ public:
     broken = 0;
     orphans.clear();
     if(!any_suspect) return true;
+    return search_whole(sites, suspect, blocked_edge, broken, orphans, regions_of_site);
+  }
 
-    // the suspects' pieces, in face order, and their regions
+  /// The check of a later round, after `Propagation::repropagate()` refilled the faces
+  /// `touched`. A site's cell is in one region or several by its own pieces alone, so only
+  /// the sites `affected` (those with a candidate on a touched face, before or after) can have
+  /// changed, and only their pieces are searched whole; `regions_of_site` holds the counts of
+  /// the round before and gets theirs. Every other site was whole then: a broken cell's
+  /// orphans were banned, which touched their faces. Gives what `run()` gives (without the
+  /// neighbour pairs); false where `run()` must decide: a touched face met an exact tie, or a
+  /// broken cell has no piece in its site's face.
+  template <class Blocked_edge>
+  bool run_on_sites(const std::vector<Site>& sites, const std::vector<std::size_t>& touched,
+                    const std::vector<std::uint8_t>& affected, const Blocked_edge& blocked_edge, std::size_t& broken,
+                    std::vector<std::pair<std::size_t, std::size_t> >& orphans,
+                    std::vector<std::size_t>& regions_of_site) const
+  {
+    CGAL_precondition(regions_of_site.size() == sites.size() && affected.size() == sites.size());
+    for(std::size_t f : touched)
+      if(m_cuts[f].degenerate) return false;
+    broken = 0;
+    orphans.clear();
+    return search_whole(sites, affected, blocked_edge, broken, orphans, regions_of_site);
+  }
+
+private:
+  // The regions of each site in `which`, searched through all its pieces (from the one in its
+  // site's face, which is region 0), into `regions_of_site`; their broken cells are counted in
+  // `broken` and the pieces outside region 0 go to `orphans`, in face order. False if a broken
+  // cell has no piece in its site's face.
+  template <class Blocked_edge>
+  bool search_whole(const std::vector<Site>& sites, const std::vector<std::uint8_t>& which, const Blocked_edge& blocked_edge,
+                    std::size_t& broken, std::vector<std::pair<std::size_t, std::size_t> >& orphans,
+                    std::vector<std::size_t>& regions_of_site) const
+  {
+    const std::size_t nf = m_mesh.number_of_faces(), n = sites.size();
     std::vector<std::vector<Piece_ref> > pieces_of(n);
     for(std::size_t f = 0; f < nf; ++f)
       for(std::size_t local = 0; local < pieces_in_face(f); ++local)
       {
         const std::uint32_t site = candidate_of(f, local).site;
-        if(suspect[site]) pieces_of[site].push_back(Piece_ref{ f, local });
+        if(which[site]) pieces_of[site].push_back(Piece_ref{ f, local });
       }
     std::vector<std::uint8_t> is_broken(n, 0);
     std::vector<std::vector<std::uint8_t> > in_own_region(n);
     for(std::size_t i = 0; i < n; ++i)
     {
-      if(!suspect[i]) continue;
+      if(!which[i]) continue;
       const std::vector<Piece_ref>& pieces = pieces_of[i];
       const std::size_t own = piece_in_face(sites[i].face, static_cast<std::uint32_t>(i));
-      if(own == no_site) return false;   // a weighted site outside its cell: the largest region is kept, by area
       std::vector<std::size_t> region(pieces.size(), no_site);
       std::size_t regions = 0;
       auto flood = [&](std::size_t first) {
@@ -208,19 +241,20 @@ public:
         }
         ++regions;
       };
-      flood(std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ sites[i].face, own }) - pieces.begin()));
+      if(own != no_site)
+        flood(std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ sites[i].face, own }) - pieces.begin()));
       for(std::size_t j = 0; j < pieces.size(); ++j)
         if(region[j] == no_site) flood(j);
       regions_of_site[i] = regions;
       if(regions > 1)
       {
+        if(own == no_site) return false;   // a weighted site outside its cell: the largest region is kept, by area
         is_broken[i] = 1;
         ++broken;
         in_own_region[i].resize(pieces.size());
         for(std::size_t j = 0; j < pieces.size(); ++j) in_own_region[i][j] = (region[j] == 0);
       }
     }
-    // the pieces outside their site's own region, in face order
     std::vector<std::size_t> next(n, 0);
     for(std::size_t f = 0; f < nf; ++f)
       for(std::size_t local = 0; local < pieces_in_face(f); ++local)
@@ -232,7 +266,6 @@ public:
     return true;
   }
 
-private:
   // The index in face g's cut of the piece of `site`, or no_site.
   std::size_t piece_in_face(std::size_t g, std::uint32_t site) const
   {
