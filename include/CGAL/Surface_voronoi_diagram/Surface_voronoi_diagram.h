@@ -460,7 +460,9 @@ private:
     const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
     SVi::Stage_timer timer(times);
 
-    m_data.mesh = shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
+    const std::shared_ptr<const Indexed_mesh> given =
+        choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
+    m_data.mesh = (given && given->source_mesh == m_tm) ? given : shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
     CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
     CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
     CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());

@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -163,7 +164,9 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
 
   Tree tree;
   CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
-  const internal::Indexed_mesh<TriangleMesh> mesh(tm, vpm);
+  // indexed once for all the diagrams (and the checks for coincident sites)
+  const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm);
+  const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
 
   Lloyd_result<TriangleMesh> result;
   std::vector<Location> previous = sites;
@@ -171,7 +174,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   {
     result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
     const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
-    const auto cells_np = Surface_voronoi::parameters::cells_only(true, np);
+    const auto cells_np = Surface_voronoi::parameters::shared_indexed_mesh(shared_mesh, Surface_voronoi::parameters::cells_only(true, np));
     const Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
     if(diagram.is_cancelled())
     {

@@ -68,6 +68,7 @@ enum refinement_max_vertices_t { refinement_max_vertices };
 enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
 enum cells_only_t { cells_only };
+enum shared_indexed_mesh_t { shared_indexed_mesh };
 } // namespace internal_np
 
 namespace parameters {
@@ -218,6 +219,9 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
 // An internal hook, not API: the diagrams inside lloyd_relaxation() need the cells (their
 // pieces, areas, centroids and energy), not the sites' neighbours or the vertices' owners.
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
+// An internal hook, not API: lloyd_relaxation() indexes the mesh once for all its diagrams
+// (a std::shared_ptr to the internal Indexed_mesh, built from the same vertex point map).
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
 #endif
 
 #undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER

@@ -530,18 +530,17 @@ private:
     const std::size_t nf = out.face_begin.size() - 1, chunk = 8192;
     std::vector<std::vector<std::pair<std::size_t, std::size_t> > > coincident(number_of_chunks(nf, chunk));
     for_each_chunk(nf, chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
-      std::vector<std::size_t> used;
+      // (position, id), sorted by position then id: the points copied, not looked up per comparison
+      std::vector<std::pair<Point_d, std::size_t> > used;
       for(std::size_t f = begin; f < end; ++f)
       {
         used.clear();
         for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
-          used.insert(used.end(), out.pieces[p].vertices.begin(), out.pieces[p].vertices.end());
-        std::sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) {
-          return out.vertices[a].point < out.vertices[b].point || (out.vertices[a].point == out.vertices[b].point && a < b);
-        });
+          for(std::size_t v : out.pieces[p].vertices) used.emplace_back(out.vertices[v].point, v);
+        std::sort(used.begin(), used.end());
         for(std::size_t k = 1; k < used.size(); ++k)
-          if(used[k] != used[k - 1] && out.vertices[used[k]].point == out.vertices[used[k - 1]].point)
-            coincident[c].emplace_back(used[k - 1], used[k]);
+          if(used[k].second != used[k - 1].second && used[k].first == used[k - 1].first)
+            coincident[c].emplace_back(used[k - 1].second, used[k].second);
       }
     });
     for(const auto& pairs : coincident)
