@@ -26,6 +26,7 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/dual_validity.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
@@ -346,7 +347,8 @@ Point scaled(const Point& p, int e)
 
 template <class Diagram>
 void report(const Arguments& args, const Diagram& vd, bool power, double load, double embedding, double output,
-            double insertion, std::size_t faces, const SV::internal::Stage_times& times)
+            double insertion, std::size_t faces, const SV::internal::Stage_times& times,
+            const SV::Dual_validity* dual)
 {
   const SV::Diagram_statistics& s = vd.statistics();
   const auto area = [&](double a) { return std::ldexp(a, 2 * args.scale); };   // in the input's units
@@ -383,6 +385,15 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "cutting: " << times["cutting"] << "\n"
             << "repair: " << times["repair"] << "\n"
             << "output: " << output << std::endl;
+  if(!dual) return;
+  std::cout << "dual_triangles: " << dual->triangles << "\n"
+            << "dual_valid: " << (dual->is_valid() ? 1 : 0) << "\n"
+            << "dual_genus: " << dual->genus << "\n"
+            << "dual_self_intersections: " << dual->self_intersections << "\n"
+            << "dual_cells_not_disks: " << dual->cells_not_disks.size() << "\n"
+            << "dual_pairs_in_several_arcs: " << dual->pairs_in_several_arcs.size() << "\n"
+            << "dual_triples_at_several_vertices: " << dual->triples_at_several_vertices.size() << "\n"
+            << "dual_vertices_of_more_than_three_cells: " << dual->vertices_of_more_than_three_cells << std::endl;
 }
 
 // Runs the diagram on `mesh` with sites given as locations of that mesh.
@@ -405,11 +416,13 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     catch(const SV::Error& e) { fail(4, e.what()); }   // the arrangement could not be built
   }
   (void)site_points;
+  SV::Dual_validity dual_validity;
   if(!args.dual.empty())
   {
     std::vector<Point> points;
     std::vector<std::array<std::size_t, 3> > triangles;
-    const bool manifold = SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
+    SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
+    dual_validity = SV::validate_dual_triangulation(vd, points, triangles);
     for(Point& p : points) p = scaled(p, args.scale);
     try
     {
@@ -418,12 +431,13 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
       });
     }
     catch(const Write_error& e) { fail(4, e.what()); }
-    if(!manifold)
-      std::cerr << "surface_voronoi: warning: the dual triangulation is not a manifold (some cell is not a disk; "
-                   "more sites help)" << std::endl;
+    if(!dual_validity.is_valid())
+      std::cerr << "surface_voronoi: warning: the dual triangulation is not a valid mesh: " << dual_validity.reason()
+                << std::endl;
   }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  report(args, vd, !choices.weights.empty(), load, embedding, output, insertion, num_faces(mesh), times);
+  report(args, vd, !choices.weights.empty(), load, embedding, output, insertion, num_faces(mesh), times,
+         args.dual.empty() ? nullptr : &dual_validity);
 }
 
 int run_main(int argc, char** argv)

@@ -433,6 +433,8 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   const TriangleMesh& triangle_mesh() const { return *m_tm; }
   /// the vertex point map of the mesh
   Vertex_point_map vertex_point_map() const { return m_vpm; }
+  /// the geometric traits the diagram constructs its points with
+  const Geom_traits& geom_traits() const { return m_traits; }
   /// @}
 
 private:

@@ -1,0 +1,249 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Where the cells of a diagram lack the closed-ball property, read on its arrangement, and
+// the checks of a triangle soup that validate_dual_triangulation() needs.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DUAL_CELL_DEFECTS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DUAL_CELL_DEFECTS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/arrangement.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+// A cell is a closed disk when it is one piece, touches itself at no vertex (its faces around
+// each vertex are one run) and has Euler characteristic V - E + F = 1 (a connected surface of
+// genus g with b boundary loops has 2 - 2g - b). Two cells share several arcs when the
+// bisector edges between them form several components; three cells meet several times when
+// several Voronoi vertices (inside the surface, exactly three cells around) have them.
+template <class Diagram>
+void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& cells_not_disks,
+                            std::vector<std::pair<std::size_t, std::size_t> >& pairs_in_several_arcs,
+                            std::vector<std::array<std::size_t, 3> >& triples_at_several_vertices,
+                            std::size_t& vertices_of_more_than_three_cells,
+                            std::map<std::array<std::size_t, 3>, std::array<double, 3> >& surface_normal_of_triple)
+{
+  typedef CGAL::Surface_mesh<Point_d> Mesh;
+  typedef Mesh::Halfedge_index Halfedge;
+  Mesh arrangement;
+  auto site = arrangement.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -1).first;
+  make_arrangement(diagram, arrangement, CGAL::parameters::face_patch_map(site));
+  const std::size_t n = diagram.number_of_sites();
+  const std::int64_t border = -2;
+  auto label = [&](Halfedge h) { return arrangement.is_border(h) ? border : site[arrangement.face(h)]; };
+
+  std::vector<long> euler(n, 0);
+  std::vector<std::uint8_t> not_disk(n, 0), has_face(n, 0);
+  Disjoint_sets pieces(arrangement.number_of_faces());
+  for(Mesh::Face_index f : arrangement.faces())
+    if(site[f] >= 0)
+    {
+      ++euler[std::size_t(site[f])];
+      has_face[std::size_t(site[f])] = 1;
+    }
+
+  // edges: once for each cell beside them; between two cells, an arc's piece
+  std::vector<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> > bisector_edges;
+  for(Mesh::Edge_index e : arrangement.edges())
+  {
+    const Halfedge h = arrangement.halfedge(e), o = arrangement.opposite(h);
+    const std::int64_t a = label(h), b = label(o);
+    if(a >= 0) --euler[std::size_t(a)];
+    if(b >= 0 && b != a) --euler[std::size_t(b)];
+    if(a >= 0 && a == b)
+      pieces.unite(std::size_t(arrangement.face(h)), std::size_t(arrangement.face(o)));
+    else if(a >= 0 && b >= 0)
+      bisector_edges.emplace_back(std::size_t((std::min)(a, b)), std::size_t((std::max)(a, b)),
+                                  std::size_t(arrangement.source(h)), std::size_t(arrangement.target(h)));
+  }
+
+  // vertices: once for each cell around them; a cell in several runs around one touches itself
+  std::map<std::array<std::size_t, 3>, std::size_t> vertices_of_triple;
+  std::vector<std::int64_t> ring, cycle;
+  vertices_of_more_than_three_cells = 0;
+  for(Mesh::Vertex_index v : arrangement.vertices())
+  {
+    if(arrangement.is_isolated(v)) continue;
+    ring.clear();
+    for(Halfedge h : CGAL::halfedges_around_target(v, arrangement)) ring.push_back(label(h));
+    for(std::size_t k = 0; k < ring.size(); ++k)
+    {
+      const std::int64_t s = ring[k];
+      if(s < 0 || std::find(ring.begin(), ring.begin() + k, s) != ring.begin() + k) continue;   // once per cell
+      ++euler[std::size_t(s)];
+      std::size_t runs = 0;
+      for(std::size_t j = 0; j < ring.size(); ++j)
+        runs += (ring[j] == s && ring[(j + ring.size() - 1) % ring.size()] != s);
+      if(runs > 1) not_disk[std::size_t(s)] = 1;
+    }
+    // a Voronoi vertex inside the surface: the cells around, each once in circular order
+    if(std::find(ring.begin(), ring.end(), border) != ring.end()) continue;
+    cycle.clear();
+    for(std::int64_t s : ring)
+      if(cycle.empty() || cycle.back() != s) cycle.push_back(s);
+    while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+    if(cycle.size() < 3 || std::find_if(cycle.begin(), cycle.end(), [](std::int64_t s) { return s < 0; }) != cycle.end())
+      continue;
+    // the surface's normal there: the area vectors of the faces around (pieces of input
+    // triangles, so facing as the surface does), which slivers do not tip
+    std::array<double, 3> normal = {{ 0., 0., 0. }};
+    for(Halfedge h : CGAL::halfedges_around_target(v, arrangement))
+    {
+      const Point_d& o = arrangement.point(v);
+      for(Halfedge g = arrangement.next(h); arrangement.target(g) != v; g = arrangement.next(g))
+      {
+        const Vector_d n = CGAL::cross_product(arrangement.point(arrangement.source(g)) - o, arrangement.point(arrangement.target(g)) - o);
+        normal[0] += n.x(); normal[1] += n.y(); normal[2] += n.z();
+      }
+    }
+    // the triangles dual_triangulation() makes here: one, or a fan from the first cell
+    for(std::size_t k = 1; k + 1 < cycle.size(); ++k)
+    {
+      std::array<std::size_t, 3> triple = {{ std::size_t(cycle[0]), std::size_t(cycle[k]), std::size_t(cycle[k + 1]) }};
+      std::sort(triple.begin(), triple.end());
+      std::array<double, 3>& sum = surface_normal_of_triple[triple];
+      for(int j = 0; j < 3; ++j) sum[j] += normal[j];
+      if(cycle.size() == 3) ++vertices_of_triple[triple];
+    }
+    if(cycle.size() > 3) ++vertices_of_more_than_three_cells;
+  }
+
+  // the cells' pieces, through the edges with the cell on both sides
+  std::vector<std::size_t> first_root(n, std::size_t(-1));
+  for(Mesh::Face_index f : arrangement.faces())
+  {
+    if(site[f] < 0) continue;
+    const std::size_t s = std::size_t(site[f]), root = pieces.find(std::size_t(f));
+    if(first_root[s] == std::size_t(-1)) first_root[s] = root;
+    else if(first_root[s] != root) not_disk[s] = 1;
+  }
+  cells_not_disks.clear();
+  for(std::size_t s = 0; s < n; ++s)
+    if(!has_face[s] || not_disk[s] || euler[s] != 1) cells_not_disks.push_back(s);
+
+  // the arcs between two cells: components of their bisector edges, joined at vertices
+  std::sort(bisector_edges.begin(), bisector_edges.end());
+  pairs_in_several_arcs.clear();
+  std::vector<std::size_t> ends;
+  for(std::size_t begin = 0; begin < bisector_edges.size();)
+  {
+    std::size_t end = begin;
+    while(end < bisector_edges.size() && std::get<0>(bisector_edges[end]) == std::get<0>(bisector_edges[begin])
+          && std::get<1>(bisector_edges[end]) == std::get<1>(bisector_edges[begin]))
+      ++end;
+    ends.clear();
+    for(std::size_t k = begin; k < end; ++k)
+    {
+      ends.push_back(std::get<2>(bisector_edges[k]));
+      ends.push_back(std::get<3>(bisector_edges[k]));
+    }
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    auto index = [&](std::size_t v) { return std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
+    Disjoint_sets arcs(ends.size());
+    std::size_t components = ends.size();
+    for(std::size_t k = begin; k < end; ++k)
+    {
+      const std::size_t a = arcs.find(index(std::get<2>(bisector_edges[k]))), b = arcs.find(index(std::get<3>(bisector_edges[k])));
+      if(a != b) { arcs.link(a, b); --components; }
+    }
+    if(components > 1)
+      pairs_in_several_arcs.emplace_back(std::get<0>(bisector_edges[begin]), std::get<1>(bisector_edges[begin]));
+    begin = end;
+  }
+
+  triples_at_several_vertices.clear();
+  for(const auto& t : vertices_of_triple)
+    if(t.second > 1) triples_at_several_vertices.push_back(t.first);
+}
+
+// The sum of the unit normals of the faces of a triangle's three sites.
+template <class TriangleMesh>
+std::array<double, 3> sum_of_site_face_normals(const Indexed_mesh<TriangleMesh>& mesh, const std::vector<Site>& sites,
+                                               const std::array<std::size_t, 3>& triangle)
+{
+  std::array<double, 3> sum = {{ 0., 0., 0. }};
+  for(std::size_t i : triangle)
+  {
+    const auto& t = mesh.triangles[sites[i].face];
+    const Point_d& a = mesh.points[t[0]];
+    const Point_d& b = mesh.points[t[1]];
+    const Point_d& c = mesh.points[t[2]];
+    const Vector_d normal = CGAL::cross_product(b - a, c - a);
+    const double length = std::sqrt(normal.squared_length());
+    if(!(length > 0)) continue;
+    sum[0] += normal.x() / length;
+    sum[1] += normal.y() / length;
+    sum[2] += normal.z() / length;
+  }
+  return sum;
+}
+
+// The vertices of a triangle soup (on vertices 0 .. n-1) whose triangles do not form one fan:
+// their link (the opposite edges) is not one path or one cycle. Triangles with a repeated
+// vertex are left out.
+inline std::size_t number_of_non_manifold_soup_vertices(std::size_t n, const std::vector<std::array<std::size_t, 3> >& soup)
+{
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > link(n);
+  for(const std::array<std::size_t, 3>& t : soup)
+  {
+    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    for(int k = 0; k < 3; ++k) link[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
+  }
+  std::size_t bad = 0;
+  std::vector<std::size_t> ends;
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(link[v].empty()) continue;
+    ends.clear();
+    for(const auto& e : link[v]) { ends.push_back(e.first); ends.push_back(e.second); }
+    std::sort(ends.begin(), ends.end());
+    bool degree_ok = true;
+    for(std::size_t k = 0; k + 2 < ends.size() && degree_ok; ++k) degree_ok = (ends[k] != ends[k + 2]);   // at most two edges at a link vertex
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    Disjoint_sets parts(ends.size());
+    std::size_t components = ends.size();
+    for(const auto& e : link[v])
+    {
+      const std::size_t a = parts.find(std::size_t(std::lower_bound(ends.begin(), ends.end(), e.first) - ends.begin()));
+      const std::size_t b = parts.find(std::size_t(std::lower_bound(ends.begin(), ends.end(), e.second) - ends.begin()));
+      if(a != b) { parts.link(a, b); --components; }
+    }
+    if(!degree_ok || components != 1) ++bad;
+  }
+  return bad;
+}
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DUAL_CELL_DEFECTS_H
