@@ -164,6 +164,27 @@ Soup tetrahedron(const V3& o, double size)
   return s;
 }
 
+// A torus around the z axis: nu segments around the axis, nv around the tube.
+Soup torus_soup(double major, double minor, std::size_t nu, std::size_t nv)
+{
+  const double pi = std::acos(-1.);
+  Soup s;
+  for(std::size_t i = 0; i < nu; ++i)
+    for(std::size_t j = 0; j < nv; ++j)
+    {
+      const double u = 2 * pi * double(i) / double(nu), v = 2 * pi * double(j) / double(nv);
+      s.points.push_back({{ (major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v) }});
+    }
+  auto at = [&](std::size_t i, std::size_t j) { return (i % nu) * nv + (j % nv); };
+  for(std::size_t i = 0; i < nu; ++i)
+    for(std::size_t j = 0; j < nv; ++j)
+    {
+      s.faces.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      s.faces.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  return s;
+}
+
 Soup merged(const Soup& a, const Soup& b)
 {
   Soup s = a;
@@ -1280,6 +1301,43 @@ TEST_CASE("program: --stats prints every required key with a numeric value", "[p
   CHECK(stat_value(stats, "lloyd_energy_2") <= stat_value(stats, "lloyd_energy_0"));
 }
 
+TEST_CASE("program: --valid-dual appends sites until the dual is valid, the given sites first and unmoved", "[program][dual]")
+{
+  Temp_dir dir;
+  write_mesh(dir / "torus.off", torus_soup(1.0, 0.4, 90, 36));
+  // three sites around the torus: three rings, whose dual is no mesh at all
+  write_sites(dir / "sites.txt", { {{ 1.4, 0, 0 }}, {{ -0.7, 1.2124355652982142, 0 }}, {{ -0.7, -1.2124355652982142, 0 }} });
+  const std::string mesh = (dir / "torus.off").string(), sites = (dir / "sites.txt").string();
+  const Run plain = run_program(dir, { mesh, "--sites", sites, "--metric", "euclidean", "--dual", (dir / "plain.off").string(),
+                                       "--sites-out", (dir / "plain_sites.txt").string(), "--stats" });
+  check_success(plain);
+  CHECK(stat_value(parse_stats(plain.out), "dual_valid") == 0);
+  CHECK(plain.err.find("not a valid mesh") != std::string::npos);
+
+  const Run valid = run_program(dir, { mesh, "--sites", sites, "--metric", "euclidean", "--dual", (dir / "valid.off").string(),
+                                       "--valid-dual", "--sites-out", (dir / "valid_sites.txt").string(),
+                                       "--output", (dir / "valid.ply").string(), "--stats" });
+  check_success(valid);
+  INFO(valid.err);
+  const auto stats = parse_stats(valid.out);
+  CHECK(stat_value(stats, "dual_valid") == 1);
+  CHECK(stat_value(stats, "dual_genus") == 1);
+  const double added = stat_value(stats, "sites_added");
+  CHECK(added > 0);
+  CHECK(stat_value(stats, "sites") == 3 + added);
+  CHECK(valid.err.find("not a valid mesh") == std::string::npos);
+  // the given sites first, where they were; the added ones after them
+  const std::vector<V3> before = read_sites_out(dir / "plain_sites.txt"), after = read_sites_out(dir / "valid_sites.txt");
+  REQUIRE(after.size() == 3 + std::size_t(added));
+  for(std::size_t i = 0; i < 3; ++i) CHECK(after[i] == before[i]);
+  // the final sites read back give the same dual, byte for byte, and it is valid
+  const Run again = run_program(dir, { mesh, "--sites", (dir / "valid_sites.txt").string(), "--metric", "euclidean",
+                                       "--dual", (dir / "again.off").string(), "--stats" });
+  check_success(again);
+  CHECK(stat_value(parse_stats(again.out), "dual_valid") == 1);
+  CHECK(same_files(dir / "valid.off", dir / "again.off"));
+}
+
 TEST_CASE("program: --sites-out round trip reproduces the diagram byte for byte", "[program]")
 {
   Temp_dir dir;
@@ -1608,6 +1666,12 @@ TEST_CASE("program: command-line errors exit 2 with one line on stderr", "[progr
   SECTION("neither --sites nor --random")
   {
     const Run r = run_program(dir, { mesh, "--output", out });
+    check_one_line_error(r, 2);
+    CHECK(!fs::exists(out));
+  }
+  SECTION("--valid-dual without --dual")
+  {
+    const Run r = run_program(dir, { mesh, "--sites", sites, "--valid-dual", "--output", out });
     check_one_line_error(r, 2);
     CHECK(!fs::exists(out));
   }

@@ -5,7 +5,7 @@
 //
 //   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
 //                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
-//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K]
+//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K]
 //                   [--threads N] [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site, or when a power weight
@@ -27,6 +27,7 @@
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
+#include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
@@ -107,6 +108,7 @@ struct Arguments
   long long random = -1, blue_noise = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false, no_refine = false;
+  bool valid_dual = false;   // sites added until the dual is a valid mesh
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
   std::size_t threads = 0;   // 0: all cores
@@ -117,7 +119,7 @@ struct Arguments
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
   "                       [--dimension D] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--lloyd K] [--threads N] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K] [--threads N] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -167,6 +169,7 @@ Arguments parse(int argc, char** argv)
     else if(arg == "--stats") a.stats = true;
     else if(arg == "--breaklines") a.breaklines = value();
     else if(arg == "--dual") a.dual = value();
+    else if(arg == "--valid-dual") a.valid_dual = true;
     else if(arg == "--lloyd") a.lloyd = static_cast<std::size_t>(parse_integer(arg, value(), 0, 10000));
     else if(arg == "--threads") a.threads = static_cast<std::size_t>(parse_integer(arg, value(), 1, 4096));
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
@@ -180,6 +183,7 @@ Arguments parse(int argc, char** argv)
   if(a.metric != "biharmonic" && a.metric != "euclidean" && a.metric != "rvd" && a.metric != "geodesic")
     fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean, rvd or geodesic)");
   if(a.dimension_given && a.metric != "biharmonic") fail(2, "--dimension applies to the biharmonic metric only");
+  if(a.valid_dual && a.dual.empty()) fail(2, "--valid-dual applies to --dual only");
   return a;
 }
 
@@ -348,7 +352,7 @@ Point scaled(const Point& p, int e)
 template <class Diagram>
 void report(const Arguments& args, const Diagram& vd, bool power, double load, double embedding, double output,
             double insertion, std::size_t faces, const SV::internal::Stage_times& times,
-            const SV::Dual_validity* dual)
+            const SV::Dual_validity* dual, std::size_t sites_added)
 {
   const SV::Diagram_statistics& s = vd.statistics();
   const auto area = [&](double a) { return std::ldexp(a, 2 * args.scale); };   // in the input's units
@@ -386,6 +390,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "repair: " << times["repair"] << "\n"
             << "output: " << output << std::endl;
   if(!dual) return;
+  if(args.valid_dual) std::cout << "sites_added: " << sites_added << "\n";
   std::cout << "dual_triangles: " << dual->triangles << "\n"
             << "dual_valid: " << (dual->is_valid() ? 1 : 0) << "\n"
             << "dual_genus: " << dual->genus << "\n"
@@ -400,7 +405,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
 template <class Metric>
 void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
          const Diagram_choices& choices, double load, double embedding, double insertion,
-         const std::vector<Point>& site_points)
+         const std::vector<Point>& site_points, std::size_t sites_added)
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
@@ -409,6 +414,17 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
       SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
+  // the dual first: with --valid-dual, one that is not valid is an error, and no file is written
+  SV::Dual_validity dual_validity;
+  std::vector<Point> dual_points;
+  std::vector<std::array<std::size_t, 3> > dual_triangles;
+  if(!args.dual.empty())
+  {
+    SV::dual_triangulation(vd, std::back_inserter(dual_points), std::back_inserter(dual_triangles));
+    dual_validity = SV::validate_dual_triangulation(vd, dual_points, dual_triangles);
+    if(args.valid_dual && !dual_validity.is_valid())
+      fail(1, args.mesh + ": no valid dual reached (" + std::to_string(sites_added) + " sites added): " + dual_validity.reason());
+  }
   if(!args.output.empty())
   {
     try { write_arrangement_PLY(args.output, vd, true, args.scale); }
@@ -416,18 +432,13 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
     catch(const SV::Error& e) { fail(4, e.what()); }   // the arrangement could not be built
   }
   (void)site_points;
-  SV::Dual_validity dual_validity;
   if(!args.dual.empty())
   {
-    std::vector<Point> points;
-    std::vector<std::array<std::size_t, 3> > triangles;
-    SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
-    dual_validity = SV::validate_dual_triangulation(vd, points, triangles);
-    for(Point& p : points) p = scaled(p, args.scale);
+    for(Point& p : dual_points) p = scaled(p, args.scale);
     try
     {
       write_output_file(args.dual, false, [&](std::ostream& os) {
-        return CGAL::IO::write_OFF(os, points, triangles, CGAL::parameters::stream_precision(17));
+        return CGAL::IO::write_OFF(os, dual_points, dual_triangles, CGAL::parameters::stream_precision(17));
       });
     }
     catch(const Write_error& e) { fail(4, e.what()); }
@@ -437,7 +448,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
   }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report(args, vd, !choices.weights.empty(), load, embedding, output, insertion, num_faces(mesh), times,
-         args.dual.empty() ? nullptr : &dual_validity);
+         args.dual.empty() ? nullptr : &dual_validity, sites_added);
 }
 
 int run_main(int argc, char** argv)
@@ -640,6 +651,53 @@ int run_main(int argc, char** argv)
     catch(const SV::Numerical_error& e) { fail(3, e.what()); }
   }
 
+  // --valid-dual: sites appended (the given ones keep their places and indices) until the
+  // dual is a valid mesh, on the input mesh like Lloyd; the final diagram is checked again
+  std::size_t sites_added = 0;
+  if(args.valid_dual)
+  {
+    const std::size_t given = locations.size(), max_added = (std::max)(std::size_t(64), given / 4);
+    // the added sites weigh nothing: the weight map covers every index they may take
+    if(!choices.weights.empty()) choices.weights.resize(given + max_added, 0.);
+    try
+    {
+      auto add = [&](auto& metric) {
+        return with_diagram_parameters(choices,
+            SV::parameters::maximum_number_of_added_sites(max_added, CGAL::parameters::edge_is_constrained_map(breakline)),
+            [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); });
+      };
+      SV::Valid_dual_result<Mesh> r;
+      if(args.metric == "biharmonic")
+      {
+        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension_for(mesh)));
+        r = add(metric);
+      }
+      else if(args.metric == "geodesic")
+      {
+        SV::Geodesic_metric<Mesh> metric(mesh);
+        r = add(metric);
+      }
+      else
+      {
+        SV::Euclidean_embedding<Mesh> metric(mesh);
+        r = add(metric);
+      }
+      if(!r.validity.is_valid())
+        fail(1, args.mesh + ": no valid dual reached (" + std::to_string(r.sites_added) + " sites added, at most "
+                + std::to_string(max_added) + "): " + r.validity.reason());
+      sites_added = r.sites_added;
+      for(std::size_t i = given; i < r.sites.size(); ++i)
+      {
+        Point q;
+        locations.push_back(canonical_location(r.sites[i], mesh, q));
+        site_points.push_back(q);
+      }
+      if(!choices.weights.empty()) choices.weights.resize(locations.size());
+    }
+    catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
+    catch(const SV::Numerical_error& e) { fail(3, e.what()); }
+  }
+
   try
   {
     {
@@ -716,17 +774,17 @@ int run_main(int argc, char** argv)
       {
         CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(dimension));
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
-        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
       }
       else if(args.metric == "geodesic")
       {
         SV::Geodesic_metric<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points, sites_added);
       }
       else
       {
         SV::Euclidean_embedding<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points);
+        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points, sites_added);
       }
     }
   }

@@ -86,6 +86,8 @@ struct Dual_validity
   /// triangle is dual to (summed over the vertices that make it), or, for a triangle no
   /// Voronoi vertex makes, against the sum of the normals of its sites' faces
   std::size_t flipped_triangles = 0;
+  /// the indices (in the range checked) of the flipped triangles
+  std::vector<std::size_t> flipped_triangle_indices;
   /// whether the triangles form an oriented 2-manifold, possibly with border
   /// (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`)
   bool is_polygon_mesh = false;
@@ -179,8 +181,9 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
   // each edge (lower site first): the triangles running it that way, and the other way
   std::map<std::pair<std::size_t, std::size_t>, std::pair<std::size_t, std::size_t> > edge_uses;
   const Geom_traits traits = diagram.geom_traits();
-  for(const std::array<std::size_t, 3>& t : soup)
+  for(std::size_t index = 0; index < soup.size(); ++index)
   {
+    const std::array<std::size_t, 3>& t = soup[index];
     for(std::size_t v : t) CGAL_precondition(v < n);
     for(std::size_t v : t) used[v] = 1;
     if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || traits.collinear_3_object()(points[t[0]], points[t[1]], points[t[2]]))
@@ -203,7 +206,10 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
     const std::array<double, 3> up = (at_vertex != surface_normal.end()) ? at_vertex->second
                                      : internal::sum_of_site_face_normals(*data.mesh, data.sites, t);
     if(CGAL::to_double(normal.x()) * up[0] + CGAL::to_double(normal.y()) * up[1] + CGAL::to_double(normal.z()) * up[2] < 0)
+    {
       ++r.flipped_triangles;
+      r.flipped_triangle_indices.push_back(index);
+    }
   }
   for(std::size_t i = 0; i < n; ++i) r.unused_sites += (used[i] == 0);
   for(const auto& e : edge_uses)

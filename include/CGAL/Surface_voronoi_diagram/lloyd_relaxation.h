@@ -161,6 +161,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const auto locate_np = CGAL::parameters::vertex_point_map(vpm).geom_traits(choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
   const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(10));
   const std::function<bool(double)> callback = internal::callback_of(np);
+  const std::size_t first_moving = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::first_moving_site), std::size_t(0));
 
   Tree tree;
   CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
@@ -191,6 +192,11 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
+      if(i < first_moving)
+      {
+        moved.push_back(CGAL::Polygon_mesh_processing::construct_point(sites[i], tm, locate_np));
+        continue;
+      }
       const Location l = internal::locate_with_AABB_tree(centroids[i], sites[i].first, tree, tm, vpm,
                                                          choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
       moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));

@@ -69,6 +69,8 @@ enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
 enum cells_only_t { cells_only };
 enum shared_indexed_mesh_t { shared_indexed_mesh };
+enum first_moving_site_t { first_moving_site };
+enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
 } // namespace internal_np
 
 namespace parameters {
@@ -199,6 +201,14 @@ unspecified_type input_face_map(const T& value);
 template <class T, class NamedParameters>
 unspecified_type input_face_map(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `maximum_number_of_added_sites`: how many
+/// sites `add_sites_for_valid_dual()` may add at most (`std::size_t`).
+template <class T>
+unspecified_type maximum_number_of_added_sites(const T& value);
+/// The chain `chain` with `maximum_number_of_added_sites(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type maximum_number_of_added_sites(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
@@ -222,6 +232,10 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
 // An internal hook, not API: lloyd_relaxation() indexes the mesh once for all its diagrams
 // (a std::shared_ptr to the internal Indexed_mesh, built from the same vertex point map).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
+// An internal hook, not API: lloyd_relaxation() keeps the sites before this index in place
+// (add_sites_for_valid_dual() relaxes only the sites it added).
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)
 #endif
 
 #undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER

@@ -1,0 +1,208 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Sites added until the dual triangulation is a valid mesh: where the cells lack the
+// closed-ball property (or a dual triangle is flipped), the widest cell involved gets a new
+// site at its point farthest from its own site, and the added sites are relaxed among the
+// given ones, which stay in place.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/dual_validity.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
+/// What `add_sites_for_valid_dual()` did.
+/// \tparam TriangleMesh the mesh type of the sites
+template <class TriangleMesh>
+struct Valid_dual_result
+{
+  /// the given sites, in place and in their order, then the sites added
+  std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites;
+  /// the number of sites added (the last ones of `sites`)
+  std::size_t sites_added = 0;
+  /// the rounds of additions made
+  std::size_t rounds = 0;
+  /// the validity of the dual of the final sites; `validity.is_valid()` tells whether a valid
+  /// dual was reached
+  Dual_validity validity;
+};
+
+namespace internal {
+
+// Per site, the centroid of its piece farthest from it (Euclidean), as a location of the
+// mesh, and that distance: where a cell that wraps around a rim or a limb reaches farthest.
+template <class TriangleMesh, class Diagram>
+void farthest_pieces(const Diagram& diagram,
+                     std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >& where,
+                     std::vector<double>& distance)
+{
+  const auto& data = Diagram_access::data(diagram);
+  const auto& mesh = *data.mesh;
+  const std::size_t n = diagram.number_of_sites();
+  std::vector<Point_d> site(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const auto& t = mesh.triangles[data.sites[i].face];
+    const auto& b = data.sites[i].barycentric;
+    site[i] = CGAL::barycenter(mesh.points[t[0]], b[0], mesh.points[t[1]], b[1], mesh.points[t[2]], b[2]);
+  }
+  where.assign(n, CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>());
+  distance.assign(n, -1.);
+  for(const Partition::Piece& piece : data.partition.pieces)
+  {
+    if(piece.site >= n || piece.vertices.empty()) continue;
+    double x = 0, y = 0, z = 0;
+    for(std::size_t v : piece.vertices)
+    {
+      const Point_d& p = data.partition.vertices[v].point;
+      x += p.x(); y += p.y(); z += p.z();
+    }
+    const double k = double(piece.vertices.size());
+    const Point_d c(x / k, y / k, z / k);
+    const double d = CGAL::squared_distance(c, site[piece.site]);
+    if(d <= distance[piece.site]) continue;
+    distance[piece.site] = d;
+    const auto& t = mesh.triangles[piece.face];
+    const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], c);
+    std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
+    const double sum = clamped[0] + clamped[1] + clamped[2];
+    for(double& w : clamped) w /= sum;
+    where[piece.site] = { mesh.face_handles[piece.face], clamped };
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
+/// Adds sites until the dual triangulation (`dual_triangulation()`) is a valid mesh of the
+/// surface (`Dual_validity::is_valid()`), or until it may add no more.
+///
+/// Each round builds the diagram and checks its dual. Where the cells lack the closed-ball
+/// property (a cell that is not a disk, two cells sharing several arcs, three meeting at
+/// several Voronoi vertices) or a dual triangle is flipped, the widest cell involved (the one
+/// whose farthest piece is farthest from its site) gets a new site at that piece: a cell
+/// wrapping around a rim or a limb is cut there. Each cell gets one new site a round. The
+/// sites added so far are then relaxed by Lloyd steps in which the given sites stay in place.
+/// The given sites keep their positions and indices; the added ones follow them.
+///
+/// \tparam ConcurrencyTag the concurrency tag of the diagrams built; default `CGAL::Sequential_tag`
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+/// \tparam Metric a model of `SurfaceVoronoiEmbedding` or of `SurfaceVoronoiLazyMetric`
+/// \param tm the mesh
+/// \param metric the metric, built on `tm`
+/// \param sites the given sites
+/// \param np an optional sequence of named parameters: those of the diagram's constructor
+///        (they apply to every diagram built) and the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{maximum_number_of_added_sites}
+///     \cgalParamDescription{how many sites may be added at most}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{a quarter of the given sites, and at least 64}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the Lloyd steps of the added sites after each round}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the sites, how many were added, and the validity of their dual
+/// \pre the preconditions of the diagram's constructor hold for `sites`
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Valid_dual_result<TriangleMesh>
+add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
+                         std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites,
+                         const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
+  typedef typename GetVertexPointMap<TriangleMesh, CGAL_NP_CLASS>::const_type VPM;
+  typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
+  typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits, ConcurrencyTag> Diagram;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  const std::size_t given = sites.size();
+  const std::size_t max_added = choose_parameter(get_parameter(np, internal_np::maximum_number_of_added_sites),
+                                                 (std::max)(std::size_t(64), given / 4));
+  const std::size_t relax = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(3));
+  // rounds beyond the budget's need: each adds at least one site
+  const std::size_t max_rounds = 64;
+
+  Valid_dual_result<TriangleMesh> result;
+  for(;;)
+  {
+    const Diagram diagram(tm, metric, sites, np);
+    std::vector<typename Diagram::Point_3> points;
+    std::vector<std::array<std::size_t, 3> > triangles;
+    dual_triangulation(diagram, std::back_inserter(points), std::back_inserter(triangles));
+    result.validity = validate_dual_triangulation(diagram, points, triangles);
+    if(result.validity.is_valid() || result.sites_added >= max_added || result.rounds >= max_rounds) break;
+
+    // the cells to cut: for each defect, its widest cell
+    std::vector<Location> farthest;
+    std::vector<double> reach;
+    internal::farthest_pieces<TriangleMesh>(diagram, farthest, reach);
+    std::vector<std::uint8_t> cut(sites.size(), 0);
+    auto widest = [&](std::initializer_list<std::size_t> cells) {
+      std::size_t best = *cells.begin();
+      for(std::size_t s : cells)
+        if(reach[s] > reach[best]) best = s;
+      if(reach[best] > 0) cut[best] = 1;
+    };
+    const Dual_validity& v = result.validity;
+    for(std::size_t s : v.cells_not_disks) widest({ s });
+    for(const auto& p : v.pairs_in_several_arcs) widest({ p.first, p.second });
+    for(const auto& t : v.triples_at_several_vertices) widest({ t[0], t[1], t[2] });
+    for(std::size_t k : v.flipped_triangle_indices) widest({ triangles[k][0], triangles[k][1], triangles[k][2] });
+    std::size_t added = 0;
+    for(std::size_t s = 0; s < cut.size() && result.sites_added + added < max_added; ++s)
+      if(cut[s])
+      {
+        sites.push_back(farthest[s]);
+        ++added;
+      }
+    if(added == 0) break;   // nothing to cut: the sites are too few for the topology
+    result.sites_added += added;
+    ++result.rounds;
+    if(relax > 0)
+      sites = lloyd_relaxation<ConcurrencyTag>(tm, metric, sites,
+                  parameters::first_moving_site(given, np).number_of_iterations(relax)).sites;
+  }
+  result.sites = sites;
+  return result;
+}
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H

@@ -1,0 +1,110 @@
+// Tests of CGAL/Surface_voronoi_diagram/valid_dual_sites.h: sites added until the dual
+// triangulation is a valid mesh, the given sites kept in place.
+#include "test_support.h"
+
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/dual_validity.h>
+#include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
+#include <test_meshes.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <cmath>
+
+using namespace svd_test;
+namespace SV = CGAL::Surface_voronoi;
+namespace GEN = svd_test::meshes;
+
+namespace {
+
+typedef SV::Euclidean_embedding<Mesh> Euclidean;
+typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Euclidean_diagram;
+
+std::vector<Location<Mesh> > sites_around_torus(const Mesh& torus, double outer_radius, std::size_t n)
+{
+  const double pi = std::acos(-1.);
+  std::vector<Location<Mesh> > sites;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const double a = 2 * pi * double(k) / double(n);
+    sites.push_back(CGAL::Polygon_mesh_processing::locate(Point(outer_radius * std::cos(a), outer_radius * std::sin(a), 0.), torus));
+  }
+  return sites;
+}
+
+// The dual of these sites, checked afresh: the oracle of what the function reports.
+SV::Dual_validity check_afresh(const Mesh& m, Euclidean& e, const std::vector<Location<Mesh> >& sites, long& genus)
+{
+  const Euclidean_diagram vd(m, e, sites);
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(triangles));
+  const SV::Dual_validity v = SV::validate_dual_triangulation(vd, points, triangles);
+  genus = -1;
+  if(v.is_polygon_mesh)
+  {
+    Mesh dual;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, dual);
+    const long euler = long(dual.number_of_vertices()) - long(dual.number_of_edges()) + long(dual.number_of_faces());
+    genus = (2 - euler) / 2;   // one closed component
+  }
+  return v;
+}
+
+} // namespace
+
+TEST_CASE("valid dual: three rings around a torus get sites until the dual is a torus, the given sites in place", "[dual][validity]")
+{
+  Mesh torus;
+  GEN::make_torus(torus, 1.0, 0.4, 90, 36);
+  Euclidean e(torus);
+  const auto given = sites_around_torus(torus, 1.4, 3);
+  {
+    long genus = 0;
+    REQUIRE_FALSE(check_afresh(torus, e, given, genus).is_valid());
+  }
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_dual(torus, e, given);
+  INFO(r.validity.reason());
+  CHECK(r.validity.is_valid());
+  CHECK(r.sites_added > 0);
+  CHECK(r.rounds > 0);
+  REQUIRE(r.sites.size() == given.size() + r.sites_added);
+  for(std::size_t i = 0; i < given.size(); ++i)
+  {
+    CHECK(r.sites[i].first == given[i].first);
+    CHECK(r.sites[i].second == given[i].second);
+  }
+  // the oracle: the dual of the returned sites, built and checked again, is a valid torus
+  long genus = -1;
+  const SV::Dual_validity again = check_afresh(torus, e, r.sites, genus);
+  CHECK(again.is_valid());
+  CHECK(genus == 1);
+  CHECK(r.validity.genus == 1);
+}
+
+TEST_CASE("valid dual: sites whose dual is valid already are returned as they are", "[dual][validity]")
+{
+  Mesh sphere;
+  GEN::make_icosphere(sphere, 4, 1.0);
+  Euclidean e(sphere);
+  const auto given = area_uniform_locations(sphere, 80, 3);
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_dual(sphere, e, given);
+  CHECK(r.validity.is_valid());
+  CHECK(r.sites_added == 0);
+  CHECK(r.rounds == 0);
+  CHECK(r.sites == given);
+}
+
+TEST_CASE("valid dual: a budget too small stops with the dual's reason, within the budget", "[dual][validity]")
+{
+  Mesh torus;
+  GEN::make_torus(torus, 1.0, 0.4, 90, 36);
+  Euclidean e(torus);
+  const auto given = sites_around_torus(torus, 1.4, 3);
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_dual(torus, e, given, SV::parameters::maximum_number_of_added_sites(1));
+  CHECK_FALSE(r.validity.is_valid());
+  CHECK(r.sites_added <= 1);
+  CHECK(r.sites.size() == given.size() + r.sites_added);
+  CHECK_FALSE(r.validity.reason().empty());
+}
