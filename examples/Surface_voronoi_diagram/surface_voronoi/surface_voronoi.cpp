@@ -672,6 +672,49 @@ int run_main(int argc, char** argv)
         CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension_for(mesh)));
         r = add(metric);
       }
+      else if(args.metric == "geodesic" && !args.insert_sites && !args.no_refine)
+      {
+        // The final diagram is built on the mesh refined for all the sites, so the sites are
+        // added there: refined for the sites so far, sites added on that mesh and brought back
+        // to the input mesh, until a refinement needs none (the one the final run builds).
+        r.sites = locations;
+        for(int pass = 0; pass < 8; ++pass)
+        {
+          Mesh refined;
+          auto input_face = refined.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input_face").first;
+          const std::size_t max_vertices = num_vertices(mesh) + (std::min)(refinement_max_vertices,
+              refinement_vertices_per_element * (num_vertices(mesh) + r.sites.size()));
+          const SV::Refined_sites<Mesh> refinement = SV::refine_for_sites(mesh, r.sites, refined,
+              SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(input_face));
+          if(refinement.edges_split == 0)
+          {
+            SV::Geodesic_metric<Mesh> metric(mesh);
+            const std::size_t before = r.sites_added;
+            r = with_diagram_parameters(choices,
+                SV::parameters::maximum_number_of_added_sites(max_added - before, CGAL::parameters::edge_is_constrained_map(breakline)),
+                [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(mesh, metric, r.sites, np); });
+            r.sites_added += before;
+            break;
+          }
+          SV::Geodesic_metric<Mesh> metric(refined);
+          const SV::Valid_dual_result<Mesh> on_refined = with_diagram_parameters(choices,
+              SV::parameters::maximum_number_of_added_sites(max_added - r.sites_added),
+              [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(refined, metric, refinement.sites, np); });
+          r.validity = on_refined.validity;
+          r.rounds += on_refined.rounds;
+          if(on_refined.sites_added == 0) break;
+          // the added sites, as locations of the input mesh (the refined faces lie in its faces)
+          for(std::size_t i = r.sites.size(); i < on_refined.sites.size(); ++i)
+          {
+            const Location& l = on_refined.sites[i];
+            const Point p = CGAL::Polygon_mesh_processing::construct_point(l, refined);
+            Point q;
+            r.sites.push_back(canonical_location(locate_near(p, input_face[l.first], mesh), mesh, q));
+          }
+          r.sites_added += on_refined.sites_added;
+          if(r.sites_added >= max_added) break;
+        }
+      }
       else if(args.metric == "geodesic")
       {
         SV::Geodesic_metric<Mesh> metric(mesh);

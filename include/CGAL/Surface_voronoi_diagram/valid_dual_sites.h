@@ -8,9 +8,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Sites added until the dual triangulation is a valid mesh: where the cells lack the
-// closed-ball property (or a dual triangle is flipped), the widest cell involved gets a new
-// site at its point farthest from its own site, and the added sites are relaxed among the
-// given ones, which stay in place.
+// closed-ball property, the widest cell involved gets a new site at its point farthest from
+// its own site; a flipped dual triangle, one at its Voronoi vertex. The added sites are
+// relaxed among the given ones, which stay in place.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -100,6 +101,51 @@ void farthest_pieces(const Diagram& diagram,
   }
 }
 
+// The Voronoi vertices where exactly three cells meet, as locations of the mesh, keyed by
+// their three sites in increasing order (the first such vertex of each triple, in piece order).
+template <class TriangleMesh, class Diagram>
+std::map<std::array<std::size_t, 3>, CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
+voronoi_vertex_locations(const Diagram& diagram)
+{
+  const auto& data = Diagram_access::data(diagram);
+  const auto& mesh = *data.mesh;
+  const Partition& partition = data.partition;
+  const std::size_t n = diagram.number_of_sites();
+  // the sites around each partition vertex (up to four), and a piece holding it
+  std::vector<std::array<std::size_t, 4> > around(partition.vertices.size());
+  std::vector<std::uint8_t> count(partition.vertices.size(), 0);
+  std::vector<std::size_t> piece_of(partition.vertices.size(), no_site);
+  for(std::size_t p = 0; p < partition.pieces.size(); ++p)
+  {
+    const Partition::Piece& piece = partition.pieces[p];
+    if(piece.site >= n) continue;
+    for(std::size_t v : piece.vertices)
+    {
+      if(piece_of[v] == no_site) piece_of[v] = p;
+      std::array<std::size_t, 4>& a = around[v];
+      if(std::find(a.begin(), a.begin() + count[v], piece.site) != a.begin() + count[v]) continue;
+      if(count[v] < 4) a[count[v]] = piece.site;
+      if(count[v] < 5) ++count[v];
+    }
+  }
+  std::map<std::array<std::size_t, 3>, CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > out;
+  for(std::size_t v = 0; v < partition.vertices.size(); ++v)
+  {
+    if(count[v] != 3) continue;
+    std::array<std::size_t, 3> key = {{ around[v][0], around[v][1], around[v][2] }};
+    std::sort(key.begin(), key.end());
+    if(out.count(key)) continue;
+    const Partition::Piece& piece = partition.pieces[piece_of[v]];
+    const auto& t = mesh.triangles[piece.face];
+    const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], partition.vertices[v].point);
+    std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
+    const double sum = clamped[0] + clamped[1] + clamped[2];
+    for(double& w : clamped) w /= sum;
+    out[key] = { mesh.face_handles[piece.face], clamped };
+  }
+  return out;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
@@ -108,9 +154,10 @@ void farthest_pieces(const Diagram& diagram,
 ///
 /// Each round builds the diagram and checks its dual. Where the cells lack the closed-ball
 /// property (a cell that is not a disk, two cells sharing several arcs, three meeting at
-/// several Voronoi vertices) or a dual triangle is flipped, the widest cell involved (the one
-/// whose farthest piece is farthest from its site) gets a new site at that piece: a cell
-/// wrapping around a rim or a limb is cut there. Each cell gets one new site a round. The
+/// several Voronoi vertices), the widest cell involved (the one whose farthest piece is
+/// farthest from its site) gets a new site at that piece: a cell wrapping around a rim or a
+/// limb is cut there. Each cell gets one new site a round. A flipped dual triangle gets a new
+/// site at its Voronoi vertex, where the surface bends more than its sites resolve. The
 /// sites added so far are then relaxed by Lloyd steps in which the given sites stay in place.
 /// The given sites keep their positions and indices; the added ones follow them.
 ///
@@ -183,12 +230,32 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     for(std::size_t s : v.cells_not_disks) widest({ s });
     for(const auto& p : v.pairs_in_several_arcs) widest({ p.first, p.second });
     for(const auto& t : v.triples_at_several_vertices) widest({ t[0], t[1], t[2] });
-    for(std::size_t k : v.flipped_triangle_indices) widest({ triangles[k][0], triangles[k][1], triangles[k][2] });
+    // a flipped triangle gets a site at its Voronoi vertex, where the surface bends more
+    // than its three sites resolve (or its widest cell, if no vertex of three cells makes it)
+    std::vector<Location> at_vertices;
+    if(!v.flipped_triangle_indices.empty())
+    {
+      const auto vertices = internal::voronoi_vertex_locations<TriangleMesh>(diagram);
+      for(std::size_t k : v.flipped_triangle_indices)
+      {
+        std::array<std::size_t, 3> key = triangles[k];
+        std::sort(key.begin(), key.end());
+        const auto at = vertices.find(key);
+        if(at != vertices.end()) at_vertices.push_back(at->second);
+        else widest({ key[0], key[1], key[2] });
+      }
+    }
     std::size_t added = 0;
     for(std::size_t s = 0; s < cut.size() && result.sites_added + added < max_added; ++s)
       if(cut[s])
       {
         sites.push_back(farthest[s]);
+        ++added;
+      }
+    for(const Location& l : at_vertices)
+      if(result.sites_added + added < max_added)
+      {
+        sites.push_back(l);
         ++added;
       }
     if(added == 0) break;   // nothing to cut: the sites are too few for the topology
