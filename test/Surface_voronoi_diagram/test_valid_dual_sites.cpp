@@ -108,3 +108,30 @@ TEST_CASE("valid dual: a budget too small stops with the dual's reason, within t
   CHECK(r.sites.size() == given.size() + r.sites_added);
   CHECK_FALSE(r.validity.reason().empty());
 }
+
+// Where a flipped triangle gets its site: the Voronoi vertex of its three cells. The oracle:
+// on a planar patch with the Euclidean embedding, such a vertex is the circumcentre of its
+// three sites, equally far from them (up to the cutting's rounding), and no site is nearer.
+TEST_CASE("valid dual: the Voronoi vertices of three cells are equally far from their sites, and none is nearer", "[dual][validity]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 31, 31, 1.0, 1.0, 0.2, 4);
+  Euclidean e(m);
+  const auto sites = area_uniform_locations(m, 40, 6);
+  const Euclidean_diagram vd(m, e, sites);
+  const auto vertices = SV::internal::voronoi_vertex_locations<Mesh>(vd);
+  std::vector<Point> site_points;
+  for(const auto& l : sites) site_points.push_back(CGAL::Polygon_mesh_processing::construct_point(l, m));
+  CHECK(vertices.size() >= 40);   // about twice the sites, less those on the border
+  for(const auto& v : vertices)
+  {
+    const Point p = CGAL::Polygon_mesh_processing::construct_point(v.second, m);
+    const double d0 = std::sqrt(CGAL::squared_distance(p, site_points[v.first[0]]));
+    const double d1 = std::sqrt(CGAL::squared_distance(p, site_points[v.first[1]]));
+    const double d2 = std::sqrt(CGAL::squared_distance(p, site_points[v.first[2]]));
+    CHECK(std::abs(d0 - d1) <= 1e-9);
+    CHECK(std::abs(d0 - d2) <= 1e-9);
+    for(const Point& q : site_points)
+      CHECK(std::sqrt(CGAL::squared_distance(p, q)) >= d0 - 1e-9);
+  }
+}
