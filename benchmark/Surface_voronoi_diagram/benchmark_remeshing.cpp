@@ -17,6 +17,8 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/dual_validity.h>
+#include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
@@ -50,8 +52,8 @@ namespace {
 struct Row
 {
   std::string model, method;
-  std::size_t vertices = 0, triangles = 0;
-  bool manifold = false;
+  std::size_t vertices = 0, triangles = 0, sites = 0, sites_added = 0;
+  SV::Dual_validity validity;
   double hausdorff = 0, chamfer = 0, seconds = 0;
 };
 
@@ -98,22 +100,33 @@ void compare(const Mesh& mesh, const std::vector<Point>& points, const std::vect
 }
 
 // `np`: the named parameters of the diagram, for Lloyd's diagrams and the final one
+// `valid_dual`: sites added after Lloyd until the dual is a valid mesh
 template <class Metric, class NamedParameters>
 Row remesh(const std::string& model, const std::string& method, const Mesh& mesh, Metric& metric,
-           const NamedParameters& np, std::size_t n, std::size_t lloyd, std::size_t samples, double setup)
+           const NamedParameters& np, std::size_t n, std::size_t lloyd, std::size_t samples, double setup, bool valid_dual)
 {
   const auto t0 = std::chrono::steady_clock::now();
-  const auto relaxed = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
-                                            np.number_of_iterations(lloyd));
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, relaxed.sites, np);
+  auto sites = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
+                                    np.number_of_iterations(lloyd)).sites;
+  std::size_t added = 0;
+  if(valid_dual)
+  {
+    const auto r = SV::add_sites_for_valid_dual(mesh, metric, sites, np);
+    sites = r.sites;
+    added = r.sites_added;
+  }
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, np);
   std::vector<Point> points;
   std::vector<std::array<std::size_t, 3> > tris;
   Row row;
   row.model = model;
   row.method = method;
   row.vertices = num_vertices(mesh);
-  row.manifold = SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(tris));
+  SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(tris));
+  row.validity = SV::validate_dual_triangulation(vd, points, tris);
   row.triangles = tris.size();
+  row.sites = sites.size();
+  row.sites_added = added;
   row.seconds = setup + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   compare(mesh, points, tris, samples, row.hausdorff, row.chamfer);
   return row;
@@ -125,7 +138,7 @@ int main(int argc, char** argv)
 {
   std::string data = SVD_BENCH_DATA_DIR;
   std::size_t n = 3000, lloyd = 10, samples = 100000;
-  bool quick = false;
+  bool quick = false, valid_dual = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -138,6 +151,7 @@ int main(int argc, char** argv)
     else if(a == "--lloyd") lloyd = std::stoul(next());
     else if(a == "--samples") samples = std::stoul(next());
     else if(a == "--quick") quick = true;
+    else if(a == "--valid-dual") valid_dual = true;
     else { std::cerr << "benchmark_remeshing: error: unknown option '" << a << "'" << std::endl; return 2; }
   }
   if(quick) { n = 500; lloyd = 3; samples = 20000; }
@@ -173,9 +187,10 @@ int main(int argc, char** argv)
   }
 
   std::cout << "# Remeshing by the dual (paper Table 1)\n\n" << n << " blue-noise sites, " << lloyd
-            << " Lloyd iterations, " << samples << " samples each way; distances / bounding-box diagonal\n\n";
-  std::cout << "| model | vertices | method | dual triangles | manifold | Hausdorff | Chamfer | seconds |\n"
-            << "| --- | ---: | --- | ---: | --- | ---: | ---: | ---: |\n";
+            << " Lloyd iterations" << (valid_dual ? ", then sites added until the dual is valid (add_sites_for_valid_dual)" : "")
+            << ", " << samples << " samples each way; distances / bounding-box diagonal\n\n";
+  std::cout << "| model | vertices | method | sites | added | dual triangles | valid | genus (input) | self-intersections | Hausdorff | Chamfer | seconds |\n"
+            << "| --- | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |\n";
   std::map<std::string, std::vector<Row> > by_method;
   for(auto& entry : models)
   {
@@ -186,14 +201,15 @@ int main(int argc, char** argv)
       SV::Euclidean_embedding<Mesh> xyz(m);
       const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST);
       const auto defaults = CGAL::parameters::default_values();
-      rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0.));
-      rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0.));
+      // the RVD's cells are not repaired: sites are not added to them
+      rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false));
+      rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual));
       const auto t = std::chrono::steady_clock::now();
       CGAL::Biharmonic_embedding<Mesh> bh(m);
       const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, defaults, n, lloyd, samples, setup));
+      rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, defaults, n, lloyd, samples, setup, valid_dual));
       SV::Geodesic_metric<Mesh> geodesic(m);
-      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0.));
+      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., valid_dual));
     }
     catch(const std::exception& e)
     {
@@ -202,20 +218,22 @@ int main(int argc, char** argv)
     }
     for(const Row& r : rows)
     {
-      std::cout << "| " << r.model << " | " << r.vertices << " | " << r.method << " | " << r.triangles << " | "
-                << (r.manifold ? "yes" : "no") << " | " << std::fixed << std::setprecision(4) << r.hausdorff << " | "
+      const std::string valid = r.validity.is_valid() ? "yes" : "no: " + r.validity.reason();
+      std::cout << "| " << r.model << " | " << r.vertices << " | " << r.method << " | " << r.sites << " | " << r.sites_added
+                << " | " << r.triangles << " | " << valid << " | " << r.validity.genus << " (" << r.validity.input_genus << ") | "
+                << r.validity.self_intersections << " | " << std::fixed << std::setprecision(4) << r.hausdorff << " | "
                 << r.chamfer << " | " << std::setprecision(2) << r.seconds << " |" << std::endl;
       by_method[r.method].push_back(r);
     }
   }
-  std::cout << "\n| method | models | mean Hausdorff | mean Chamfer | manifold duals |\n| --- | ---: | ---: | ---: | ---: |\n";
+  std::cout << "\n| method | models | mean Hausdorff | mean Chamfer | valid duals |\n| --- | ---: | ---: | ---: | ---: |\n";
   for(const std::string method : { "RVD", "EDBVD", "biharmonic d=10", "geodesic" })
   {
     const auto& rows = by_method[method];
     if(rows.empty()) continue;
     double h = 0, c = 0;
     std::size_t manifold = 0;
-    for(const Row& r : rows) { h += r.hausdorff; c += r.chamfer; manifold += r.manifold; }
+    for(const Row& r : rows) { h += r.hausdorff; c += r.chamfer; manifold += r.validity.is_valid(); }
     std::cout << "| " << method << " | " << rows.size() << " | " << std::setprecision(4) << h / rows.size() << " | "
               << c / rows.size() << " | " << manifold << " |" << std::endl;
   }
