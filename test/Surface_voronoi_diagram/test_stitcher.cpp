@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <functional>
 #include <random>
 #include <set>
 #include <vector>
@@ -546,6 +547,34 @@ void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<
 
 bool folded_grid_blocked_edge(std::size_t e) { return e % 37 == 0; }
 
+// A real propagation over a folded grid (folded_grid_sites()), and the cuts of all its faces.
+// Not copied: the propagation holds references to the members.
+struct Folded_grid_propagation
+{
+  typedef std::function<bool(std::size_t, int)> Blocked;
+  St_run r;
+  std::vector<SVI::Site> located;
+  std::vector<std::size_t> site_faces;
+  Folded_grid_fields fields{ nullptr };
+  std::unique_ptr<SVI::Propagation<St_mesh, Folded_grid_fields, Blocked> > propagation;
+
+  Folded_grid_propagation(double amplitude, std::size_t number_of_sites, std::mt19937& rng)
+  {
+    folded_grid_sites(amplitude, number_of_sites, rng, r, located, site_faces);
+    fields.field = &r.field;
+    const St_indexed* mesh = &r.mesh;
+    propagation.reset(new SVI::Propagation<St_mesh, Folded_grid_fields, Blocked>(r.mesh, fields, site_faces,
+        Blocked([mesh](std::size_t f, int k) { return folded_grid_blocked_edge(mesh->edges[f][k]); })));
+    propagation->run();
+    std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
+    std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
+    r.cuts.resize(all_faces.size());
+    cut_listed_faces(propagation->candidates, all_faces, r.cuts);
+  }
+  Folded_grid_propagation(const Folded_grid_propagation&) = delete;
+  Folded_grid_propagation& operator=(const Folded_grid_propagation&) = delete;
+};
+
 } // namespace
 
 // The first round's check (Symbolic_cell_check::run_from_links(): the propagation's links
@@ -559,18 +588,10 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
   for(int trial = 0; trial < 40; ++trial)
   {
     INFO("trial " << trial);
-    St_run r;
-    std::vector<SVI::Site> located;
-    std::vector<std::size_t> site_faces;
-    folded_grid_sites(1.5 + 0.1 * trial, 6 + trial % 10, rng, r, located, site_faces);
-    const Folded_grid_fields fields{ &r.field };
-    auto blocked = [&](std::size_t f, int k) { return folded_grid_blocked_edge(r.mesh.edges[f][k]); };
-    SVI::Propagation<St_mesh, Folded_grid_fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
-    propagation.run();
-    std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
-    std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
-    r.cuts.resize(all_faces.size());
-    cut_listed_faces(propagation.candidates, all_faces, r.cuts);
+    Folded_grid_propagation grid(1.5 + 0.1 * trial, 6 + trial % 10, rng);
+    St_run& r = grid.r;
+    const std::vector<SVI::Site>& located = grid.located;
+    auto& propagation = *grid.propagation;
 
     SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
     std::size_t broken = 0, quick_broken = 0;
@@ -600,21 +621,13 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
   for(int trial = 0; trial < 120; ++trial)
   {
     INFO("trial " << trial);
-    St_run r;
-    std::vector<SVI::Site> located;
-    std::vector<std::size_t> site_faces;
-    folded_grid_sites(1.5 + 0.03 * trial, 8 + trial % 25, rng, r, located, site_faces);
-    const Folded_grid_fields fields{ &r.field };
-    auto blocked = [&](std::size_t f, int k) { return folded_grid_blocked_edge(r.mesh.edges[f][k]); };
-    SVI::Propagation<St_mesh, Folded_grid_fields, decltype(blocked)> propagation(r.mesh, fields, site_faces, blocked);
-    propagation.run();
-    std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
-    std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
-    r.cuts.resize(all_faces.size());
-    cut_listed_faces(propagation.candidates, all_faces, r.cuts);
+    Folded_grid_propagation grid(1.5 + 0.03 * trial, 8 + trial % 25, rng);
+    St_run& r = grid.r;
+    const std::vector<SVI::Site>& located = grid.located;
+    auto& propagation = *grid.propagation;
 
     SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
-    SVI::Banned_fields banned(all_faces.size());
+    SVI::Banned_fields banned(r.mesh.number_of_faces());
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
     std::size_t broken = 0;
     std::vector<std::pair<std::size_t, std::size_t> > orphans;

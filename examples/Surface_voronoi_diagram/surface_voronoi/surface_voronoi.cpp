@@ -205,6 +205,25 @@ auto with_diagram_parameters(const Diagram_choices& choices, const NamedParamete
   return f(SV::parameters::site_weight_map(CGAL::make_property_map(choices.weights), chain));
 }
 
+// Calls `f(metric)` with the metric --metric names, built on `mesh` (the biharmonic one of
+// dimension `dimension`): Lloyd's and --valid-dual's metric, on the input mesh.
+template <class Function>
+auto with_input_metric(const Arguments& args, const Mesh& mesh, std::size_t dimension, const Function& f)
+{
+  if(args.metric == "biharmonic")
+  {
+    CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension));
+    return f(metric);
+  }
+  if(args.metric == "geodesic")
+  {
+    SV::Geodesic_metric<Mesh> metric(mesh);
+    return f(metric);
+  }
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  return f(metric);
+}
+
 // Sites that --sites-out must give back bit for bit: read back, the point written for a
 // site must be located at that very site. Two kinds of sites have that property:
 //  - a fixed point: a location inside its face (every coordinate at least 2^-20, so that the
@@ -626,22 +645,7 @@ int run_main(int argc, char** argv)
         return with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd),
                                        [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); });
       };
-      SV::Lloyd_result<Mesh> r;
-      if(args.metric == "biharmonic")
-      {
-        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension_for(mesh)));
-        r = relax(metric);
-      }
-      else if(args.metric == "geodesic")
-      {
-        SV::Geodesic_metric<Mesh> metric(mesh);
-        r = relax(metric);
-      }
-      else
-      {
-        SV::Euclidean_embedding<Mesh> metric(mesh);
-        r = relax(metric);
-      }
+      const SV::Lloyd_result<Mesh> r = with_input_metric(args, mesh, dimension_for(mesh), relax);
       lloyd_energies = r.energies;
       for(std::size_t i = 0; i < r.sites.size(); ++i)
         locations[i] = canonical_location(r.sites[i], mesh, site_points[i]);
@@ -667,12 +671,7 @@ int run_main(int argc, char** argv)
             [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); });
       };
       SV::Valid_dual_result<Mesh> r;
-      if(args.metric == "biharmonic")
-      {
-        CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension_for(mesh)));
-        r = add(metric);
-      }
-      else if(args.metric == "geodesic" && !args.insert_sites && !args.no_refine)
+      if(args.metric == "geodesic" && !args.insert_sites && !args.no_refine)
       {
         // The final diagram is built on the mesh refined for all the sites, so the sites are
         // added there: refined for the sites so far, sites added on that mesh and brought back
@@ -715,16 +714,8 @@ int run_main(int argc, char** argv)
           if(r.sites_added >= max_added) break;
         }
       }
-      else if(args.metric == "geodesic")
-      {
-        SV::Geodesic_metric<Mesh> metric(mesh);
-        r = add(metric);
-      }
       else
-      {
-        SV::Euclidean_embedding<Mesh> metric(mesh);
-        r = add(metric);
-      }
+        r = with_input_metric(args, mesh, dimension_for(mesh), add);
       if(!r.validity.is_valid())
         fail(1, args.mesh + ": no valid dual reached (" + std::to_string(r.sites_added) + " sites added, at most "
                 + std::to_string(max_added) + "): " + r.validity.reason());
