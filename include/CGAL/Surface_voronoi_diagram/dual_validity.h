@@ -82,9 +82,10 @@ struct Dual_validity
   std::size_t non_manifold_vertices = 0;
   /// triangles with a repeated site, or with collinear sites (zero area)
   std::size_t degenerate_triangles = 0;
-  /// triangles facing against the surface: against its normal at the Voronoi vertex the
-  /// triangle is dual to (summed over the vertices that make it), or, for a triangle no
-  /// Voronoi vertex makes, against the sum of the normals of its sites' faces
+  /// triangles facing against the surface: against the normal of every face around the
+  /// Voronoi vertex the triangle is dual to (so that one across a crease or a thin rim, which
+  /// faces along neither side, is not taken for flipped), or, for a triangle no Voronoi vertex
+  /// makes, against the sum of the normals of its sites' faces
   std::size_t flipped_triangles = 0;
   /// the indices (in the range checked) of the flipped triangles
   std::vector<std::size_t> flipped_triangle_indices;
@@ -170,9 +171,9 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
   const std::size_t n = points.size();
 
   Dual_validity r;
-  std::map<std::array<std::size_t, 3>, std::array<double, 3> > surface_normal;
+  std::map<std::array<std::size_t, 3>, std::vector<std::array<double, 3> > > surface_normals;
   internal::find_dual_cell_defects(diagram, r.cells_not_disks, r.pairs_in_several_arcs, r.triples_at_several_vertices,
-                                   r.vertices_of_more_than_three_cells, surface_normal);
+                                   r.vertices_of_more_than_three_cells, surface_normals);
 
   // the triangles one by one, their edges, and the sites' links
   std::vector<std::array<std::size_t, 3> > soup(triangles.begin(), triangles.end());
@@ -202,10 +203,13 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
         traits.construct_vector_3_object()(points[t[0]], points[t[1]]), traits.construct_vector_3_object()(points[t[0]], points[t[2]]));
     std::array<std::size_t, 3> key = t;
     std::sort(key.begin(), key.end());
-    const auto at_vertex = surface_normal.find(key);
-    const std::array<double, 3> up = (at_vertex != surface_normal.end()) ? at_vertex->second
-                                     : internal::sum_of_site_face_normals(*data.mesh, data.sites, t);
-    if(CGAL::to_double(normal.x()) * up[0] + CGAL::to_double(normal.y()) * up[1] + CGAL::to_double(normal.z()) * up[2] < 0)
+    const double nx = CGAL::to_double(normal.x()), ny = CGAL::to_double(normal.y()), nz = CGAL::to_double(normal.z());
+    auto against = [&](const std::array<double, 3>& up) { return nx * up[0] + ny * up[1] + nz * up[2] < 0; };
+    const auto at_vertex = surface_normals.find(key);
+    const bool flipped = (at_vertex != surface_normals.end() && !at_vertex->second.empty())
+        ? std::all_of(at_vertex->second.begin(), at_vertex->second.end(), against)
+        : against(internal::sum_of_site_face_normals(*data.mesh, data.sites, t));
+    if(flipped)
     {
       ++r.flipped_triangles;
       r.flipped_triangle_indices.push_back(index);

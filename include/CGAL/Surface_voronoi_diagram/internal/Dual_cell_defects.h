@@ -49,7 +49,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
                             std::vector<std::pair<std::size_t, std::size_t> >& pairs_in_several_arcs,
                             std::vector<std::array<std::size_t, 3> >& triples_at_several_vertices,
                             std::size_t& vertices_of_more_than_three_cells,
-                            std::map<std::array<std::size_t, 3>, std::array<double, 3> >& surface_normal_of_triple)
+                            std::map<std::array<std::size_t, 3>, std::vector<std::array<double, 3> > >& surface_normals_of_triple)
 {
   typedef CGAL::Surface_mesh<Point_d> Mesh;
   typedef Mesh::Halfedge_index Halfedge;
@@ -88,6 +88,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   // vertices: once for each cell around them; a cell in several runs around one touches itself
   std::map<std::array<std::size_t, 3>, std::size_t> vertices_of_triple;
   std::vector<std::int64_t> ring, cycle;
+  std::vector<std::array<double, 3> > normals;
   vertices_of_more_than_three_cells = 0;
   for(Mesh::Vertex_index v : arrangement.vertices())
   {
@@ -112,25 +113,26 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
     while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
     if(cycle.size() < 3 || std::find_if(cycle.begin(), cycle.end(), [](std::int64_t s) { return s < 0; }) != cycle.end())
       continue;
-    // the surface's normal there: the area vectors of the faces around (pieces of input
-    // triangles, so facing as the surface does), which slivers do not tip
-    std::array<double, 3> normal = {{ 0., 0., 0. }};
+    // the surface's normals there: those of the faces around (pieces of input triangles, so
+    // facing as the surface does), each from its area vector; on a crease or a thin rim they
+    // point several ways
+    normals.clear();
     for(Halfedge h : CGAL::halfedges_around_target(v, arrangement))
     {
       const Point_d& o = arrangement.point(v);
+      Vector_d area(0., 0., 0.);
       for(Halfedge g = arrangement.next(h); arrangement.target(g) != v; g = arrangement.next(g))
-      {
-        const Vector_d n = CGAL::cross_product(arrangement.point(arrangement.source(g)) - o, arrangement.point(arrangement.target(g)) - o);
-        normal[0] += n.x(); normal[1] += n.y(); normal[2] += n.z();
-      }
+        area = area + CGAL::cross_product(arrangement.point(arrangement.source(g)) - o, arrangement.point(arrangement.target(g)) - o);
+      const double length = std::sqrt(area.squared_length());
+      if(length > 0) normals.push_back({{ area.x() / length, area.y() / length, area.z() / length }});
     }
     // the triangles dual_triangulation() makes here: one, or a fan from the first cell
     for(std::size_t k = 1; k + 1 < cycle.size(); ++k)
     {
       std::array<std::size_t, 3> triple = {{ std::size_t(cycle[0]), std::size_t(cycle[k]), std::size_t(cycle[k + 1]) }};
       std::sort(triple.begin(), triple.end());
-      std::array<double, 3>& sum = surface_normal_of_triple[triple];
-      for(int j = 0; j < 3; ++j) sum[j] += normal[j];
+      std::vector<std::array<double, 3> >& all = surface_normals_of_triple[triple];
+      all.insert(all.end(), normals.begin(), normals.end());
       if(cycle.size() == 3) ++vertices_of_triple[triple];
     }
     if(cycle.size() > 3) ++vertices_of_more_than_three_cells;
