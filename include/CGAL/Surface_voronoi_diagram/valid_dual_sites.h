@@ -59,6 +59,20 @@ struct Valid_dual_result
 
 namespace internal {
 
+// A point of (or on the border of) face f, as a location of f: clamped and normalized, so
+// that rounding does not step outside the face.
+template <class TriangleMesh>
+CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
+location_in_face(const Indexed_mesh<TriangleMesh>& mesh, std::size_t f, const Point_d& p)
+{
+  const auto& t = mesh.triangles[f];
+  const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], p);
+  std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
+  const double sum = clamped[0] + clamped[1] + clamped[2];
+  for(double& w : clamped) w /= sum;
+  return { mesh.face_handles[f], clamped };
+}
+
 // Per site, the centroid of its piece farthest from it (Euclidean), as a location of the
 // mesh, and that distance: where a cell that wraps around a rim or a limb reaches farthest.
 template <class TriangleMesh, class Diagram>
@@ -92,12 +106,7 @@ void farthest_pieces(const Diagram& diagram,
     const double d = CGAL::squared_distance(c, site[piece.site]);
     if(d <= distance[piece.site]) continue;
     distance[piece.site] = d;
-    const auto& t = mesh.triangles[piece.face];
-    const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], c);
-    std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
-    const double sum = clamped[0] + clamped[1] + clamped[2];
-    for(double& w : clamped) w /= sum;
-    where[piece.site] = { mesh.face_handles[piece.face], clamped };
+    where[piece.site] = location_in_face(mesh, piece.face, c);
   }
 }
 
@@ -135,13 +144,7 @@ voronoi_vertex_locations(const Diagram& diagram)
     std::array<std::size_t, 3> key = {{ around[v][0], around[v][1], around[v][2] }};
     std::sort(key.begin(), key.end());
     if(out.count(key)) continue;
-    const Partition::Piece& piece = partition.pieces[piece_of[v]];
-    const auto& t = mesh.triangles[piece.face];
-    const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], partition.vertices[v].point);
-    std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
-    const double sum = clamped[0] + clamped[1] + clamped[2];
-    for(double& w : clamped) w /= sum;
-    out[key] = { mesh.face_handles[piece.face], clamped };
+    out[key] = location_in_face(mesh, partition.pieces[piece_of[v]].face, partition.vertices[v].point);
   }
   return out;
 }
