@@ -1338,6 +1338,32 @@ TEST_CASE("program: --valid-dual appends sites until the dual is valid, the give
   CHECK(same_files(dir / "valid.off", dir / "again.off"));
 }
 
+TEST_CASE("program: --valid-dual that reaches no valid dual exits 1 with one line and writes nothing", "[program][dual]")
+{
+  // two spheres, every site on the first: the second is reached by no site, so no dual of
+  // these sites has the input's two components, and no site added inside a cell changes that
+  Temp_dir dir;
+  write_mesh(dir / "two.off", merged(octahedral_sphere(4), octahedral_sphere(3, {{ 4, 0, 0 }})));
+  std::vector<V3> sites;
+  const double golden = std::acos(-1.) * (3. - std::sqrt(5.));
+  for(int k = 0; k < 40; ++k)
+  {
+    const double z = 1. - 2. * (k + 0.5) / 40., r = std::sqrt(1. - z * z);
+    sites.push_back({{ r * std::cos(golden * k), r * std::sin(golden * k), z }});
+  }
+  write_sites(dir / "sites.txt", sites);
+  const std::string out = (dir / "out.ply").string(), dual = (dir / "dual.off").string(), sites_out = (dir / "final.txt").string();
+  const Run r = run_program(dir, { (dir / "two.off").string(), "--sites", (dir / "sites.txt").string(), "--metric", "euclidean",
+                                   "--dual", dual, "--valid-dual", "--output", out, "--sites-out", sites_out });
+  check_one_line_error(r, 1);
+  CHECK(r.err.find("no valid dual reached") != std::string::npos);
+  CHECK(r.err.find("components") != std::string::npos);
+  CHECK(r.err.find("too few for the surface's topology") != std::string::npos);
+  CHECK(!fs::exists(out));
+  CHECK(!fs::exists(dual));
+  CHECK(!fs::exists(sites_out));
+}
+
 TEST_CASE("program: --sites-out round trip reproduces the diagram byte for byte", "[program]")
 {
   Temp_dir dir;

@@ -93,6 +93,7 @@ TEST_CASE("valid dual: sites whose dual is valid already are returned as they ar
   CHECK(r.validity.is_valid());
   CHECK(r.sites_added == 0);
   CHECK(r.rounds == 0);
+  CHECK_FALSE(r.nothing_to_cut);
   CHECK(r.sites == given);
 }
 

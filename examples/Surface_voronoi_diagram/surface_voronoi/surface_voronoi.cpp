@@ -718,7 +718,8 @@ int run_main(int argc, char** argv)
         r = with_input_metric(args, mesh, dimension_for(mesh), add);
       if(!r.validity.is_valid())
         fail(1, args.mesh + ": no valid dual reached (" + std::to_string(r.sites_added) + " sites added, at most "
-                + std::to_string(max_added) + "): " + r.validity.reason());
+                + std::to_string(max_added) + "): " + r.validity.reason()
+                + (r.nothing_to_cut ? "; no cell is left to cut: the sites are too few for the surface's topology, or a component holds none" : ""));
       sites_added = r.sites_added;
       for(std::size_t i = given; i < r.sites.size(); ++i)
       {

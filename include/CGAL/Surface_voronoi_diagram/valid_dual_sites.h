@@ -52,6 +52,10 @@ struct Valid_dual_result
   std::size_t sites_added = 0;
   /// the rounds of additions made
   std::size_t rounds = 0;
+  /// whether it stopped, the dual still not valid, with no cell to cut: what is wrong is the
+  /// triangulation's topology alone (the sites are too few for the surface's genus, or a
+  /// component holds no site)
+  bool nothing_to_cut = false;
   /// the validity of the dual of the final sites; `validity.is_valid()` tells whether a valid
   /// dual was reached
   Dual_validity validity;
@@ -261,7 +265,11 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
         sites.push_back(l);
         ++added;
       }
-    if(added == 0) break;   // nothing to cut: the sites are too few for the topology
+    if(added == 0)
+    {
+      result.nothing_to_cut = true;
+      break;
+    }
     result.sites_added += added;
     ++result.rounds;
     if(relax > 0)
