@@ -205,6 +205,14 @@ auto with_diagram_parameters(const Diagram_choices& choices, const NamedParamete
   return f(SV::parameters::site_weight_map(CGAL::make_property_map(choices.weights), chain));
 }
 
+// The most vertices the geodesic metric's refinement for `sites` sites may give `mesh`: the
+// cap bounds the vertices added, so that a mesh of over a million vertices can still be
+// refined a little.
+std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
+{
+  return num_vertices(mesh) + (std::min)(refinement_max_vertices, refinement_vertices_per_element * (num_vertices(mesh) + sites));
+}
+
 // Calls `f(metric)` with the metric --metric names, built on `mesh` (the biharmonic one of
 // dimension `dimension`): Lloyd's and --valid-dual's metric, on the input mesh.
 template <class Function>
@@ -681,8 +689,7 @@ int run_main(int argc, char** argv)
         {
           Mesh refined;
           auto input_face = refined.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input_face").first;
-          const std::size_t max_vertices = num_vertices(mesh) + (std::min)(refinement_max_vertices,
-              refinement_vertices_per_element * (num_vertices(mesh) + r.sites.size()));
+          const std::size_t max_vertices = refinement_cap(mesh, r.sites.size());
           const SV::Refined_sites<Mesh> refinement = SV::refine_for_sites(mesh, r.sites, refined,
               SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(input_face));
           if(refinement.edges_split == 0)
@@ -760,10 +767,7 @@ int run_main(int argc, char** argv)
       {
         // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
         const auto ti = Clock::now();
-        // the cap bounds the vertices added, so that a mesh of over a million vertices can
-        // still be refined a little
-        const std::size_t max_vertices = num_vertices(mesh) + (std::min)(refinement_max_vertices,
-            refinement_vertices_per_element * (num_vertices(mesh) + locations.size()));
+        const std::size_t max_vertices = refinement_cap(mesh, locations.size());
         const SV::Refined_sites<Mesh> r = SV::refine_for_sites(mesh, locations, refined,
             SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(refined_input_face));
         if(r.vertex_limit_reached)

@@ -31,6 +31,20 @@
 
 namespace CGAL {
 namespace Surface_voronoi {
+namespace internal {
+
+// The cells around a vertex, each run of faces of one cell once, from the labels of the faces
+// in their order around it (a run across the start counted once): the cycle whose fan
+// dual_triangulation() makes, and validate_dual_triangulation() checks, at a Voronoi vertex.
+inline void cells_in_circular_order(const std::vector<std::int64_t>& labels, std::vector<std::int64_t>& cycle)
+{
+  cycle.clear();
+  for(std::int64_t s : labels)
+    if(cycle.empty() || cycle.back() != s) cycle.push_back(s);
+  while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+}
+
+} // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramOutputs
 /// Writes the dual triangulation of `diagram` as a polygon soup: `points` receives the sites
@@ -61,18 +75,15 @@ bool dual_triangulation(const Diagram& diagram, PointOutputIterator points, Tria
   for(std::size_t i = 0; i < diagram.number_of_sites(); ++i) *points++ = diagram.site_point(i);
 
   std::vector<std::array<std::size_t, 3> > soup;
-  std::vector<std::int64_t> ring;
+  std::vector<std::int64_t> labels, ring;
   for(Mesh::Vertex_index v : arrangement.vertices())
   {
     if(CGAL::is_border(v, arrangement)) continue;
     // the cells around v, in the order of the faces around it
-    ring.clear();
+    labels.clear();
     for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, arrangement))
-    {
-      const std::int64_t s = site[face(h, arrangement)];
-      if(ring.empty() || ring.back() != s) ring.push_back(s);
-    }
-    while(ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+      labels.push_back(site[face(h, arrangement)]);
+    internal::cells_in_circular_order(labels, ring);
     if(ring.size() < 3) continue;
     bool reached = true;
     for(std::int64_t s : ring) reached &= (s >= 0);

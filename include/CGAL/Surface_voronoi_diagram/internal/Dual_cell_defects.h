@@ -18,6 +18,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/arrangement.h>
+#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -107,10 +108,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
     }
     // a Voronoi vertex inside the surface: the cells around, each once in circular order
     if(std::find(ring.begin(), ring.end(), border) != ring.end()) continue;
-    cycle.clear();
-    for(std::int64_t s : ring)
-      if(cycle.empty() || cycle.back() != s) cycle.push_back(s);
-    while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+    cells_in_circular_order(ring, cycle);
     if(cycle.size() < 3 || std::find_if(cycle.begin(), cycle.end(), [](std::int64_t s) { return s < 0; }) != cycle.end())
       continue;
     // the surface's normals there: those of the faces around (pieces of input triangles, so
