@@ -7,7 +7,9 @@
 // distance either way and Chamfer = half the sum of the two mean distances, both divided by
 // the bounding-box diagonal. Prints markdown tables; not a test.
 //
-//   benchmark_remeshing [--data DIR] [--sites N] [--lloyd K] [--samples S] [--quick]
+//   benchmark_remeshing [--data DIR] [--sites N] [--lloyd K] [--samples S] [--quick] [--valid-dual]
+//                       [--models NAME,...] [--methods RVD,EDBVD,biharmonic,geodesic]
+//                       [--dimension D|auto]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -32,6 +34,7 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Random.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -132,6 +135,11 @@ Row remesh(const std::string& model, const std::string& method, const Mesh& mesh
   return row;
 }
 
+std::string biharmonic_label(const std::string& asked, std::size_t d)
+{
+  return asked == "auto" ? "biharmonic d=auto (" + std::to_string(d) + ")" : "biharmonic d=" + std::to_string(d);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -139,6 +147,15 @@ int main(int argc, char** argv)
   std::string data = SVD_BENCH_DATA_DIR;
   std::size_t n = 3000, lloyd = 10, samples = 100000;
   bool quick = false, valid_dual = false;
+  std::string dimension = "10";
+  std::vector<std::string> only_models, methods = { "RVD", "EDBVD", "biharmonic", "geodesic" };
+  auto split = [](const std::string& list) {
+    std::vector<std::string> out;
+    std::size_t begin = 0;
+    for(std::size_t end; (end = list.find(',', begin)) != std::string::npos; begin = end + 1) out.push_back(list.substr(begin, end - begin));
+    out.push_back(list.substr(begin));
+    return out;
+  };
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -152,6 +169,9 @@ int main(int argc, char** argv)
     else if(a == "--samples") samples = std::stoul(next());
     else if(a == "--quick") quick = true;
     else if(a == "--valid-dual") valid_dual = true;
+    else if(a == "--models") only_models = split(next());
+    else if(a == "--methods") methods = split(next());
+    else if(a == "--dimension") dimension = next();
     else { std::cerr << "benchmark_remeshing: error: unknown option '" << a << "'" << std::endl; return 2; }
   }
   if(quick) { n = 500; lloyd = 3; samples = 20000; }
@@ -163,6 +183,7 @@ int main(int argc, char** argv)
   if(!data.empty() && std::filesystem::is_directory(data))
     for(const std::string& name : names)
     {
+      if(!only_models.empty() && std::find(only_models.begin(), only_models.end(), name) == only_models.end()) continue;
       const std::string file = data + "/" + name + ".off";
       if(!std::filesystem::exists(file)) continue;
       Mesh m;
@@ -198,18 +219,27 @@ int main(int argc, char** argv)
     std::vector<Row> rows;
     try
     {
+      auto wanted = [&](const char* method) { return std::find(methods.begin(), methods.end(), method) != methods.end(); };
       SV::Euclidean_embedding<Mesh> xyz(m);
       const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST);
       const auto defaults = CGAL::parameters::default_values();
       // the RVD's cells are not repaired: sites are not added to them
-      rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false));
-      rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual));
-      const auto t = std::chrono::steady_clock::now();
-      CGAL::Biharmonic_embedding<Mesh> bh(m);
-      const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-      rows.push_back(remesh(entry.first, "biharmonic d=10", m, bh, defaults, n, lloyd, samples, setup, valid_dual));
-      SV::Geodesic_metric<Mesh> geodesic(m);
-      rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., valid_dual));
+      if(wanted("RVD")) rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false));
+      if(wanted("EDBVD")) rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual));
+      if(wanted("biharmonic"))
+      {
+        const std::size_t d = (std::min)(dimension == "auto" ? SV::biharmonic_dimension_for_sites(n) : std::stoul(dimension),
+                                         CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m));
+        const auto t = std::chrono::steady_clock::now();
+        CGAL::Biharmonic_embedding<Mesh> bh(m, SV::parameters::embedding_dimension(d));
+        const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+        rows.push_back(remesh(entry.first, biharmonic_label(dimension, d), m, bh, defaults, n, lloyd, samples, setup, valid_dual));
+      }
+      if(wanted("geodesic"))
+      {
+        SV::Geodesic_metric<Mesh> geodesic(m);
+        rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., valid_dual));
+      }
     }
     catch(const std::exception& e)
     {
@@ -227,9 +257,10 @@ int main(int argc, char** argv)
     }
   }
   std::cout << "\n| method | models | mean Hausdorff | mean Chamfer | valid duals |\n| --- | ---: | ---: | ---: | ---: |\n";
-  for(const std::string method : { "RVD", "EDBVD", "biharmonic d=10", "geodesic" })
+  for(const auto& entry : by_method)
   {
-    const auto& rows = by_method[method];
+    const std::string& method = entry.first;
+    const auto& rows = entry.second;
     if(rows.empty()) continue;
     double h = 0, c = 0;
     std::size_t manifold = 0;

@@ -251,3 +251,18 @@ TEST_CASE("embedding: the nested-dissection ordering is a permutation with less 
   CHECK(small.indices() == reference.indices());
 }
 #endif
+
+// The rule behind --dimension auto: at least 10, enough for the sites, and no more.
+TEST_CASE("biharmonic dimension: the dimension for n sites resolves them, and one less would not", "[biharmonic]")
+{
+  namespace SV = CGAL::Surface_voronoi;
+  for(std::size_t n : { std::size_t(1), std::size_t(299), std::size_t(300), std::size_t(301), std::size_t(3000), std::size_t(100000) })
+  {
+    const std::size_t d = SV::biharmonic_dimension_for_sites(n);
+    INFO("n = " << n << ", d = " << d);
+    CHECK(d >= 10);
+    CHECK(SV::biharmonic_resolved_sites(d) >= n);
+    if(d > 10) CHECK(SV::biharmonic_resolved_sites(d - 1) < n);
+  }
+  CHECK(SV::biharmonic_resolved_sites(10) == 300);
+}

@@ -1180,6 +1180,38 @@ TEST_CASE("program: biharmonic is the default metric and --dimension is honoured
   CHECK(different_files(dir / "four.ply", dir / "default.ply"));
 }
 
+// --dimension auto is biharmonic_dimension_for_sites() of the sites given: 700 sites ask for
+// ceil(700 / 30) = 24, the same diagram as --dimension 24; 10 resolves 300 cells, and is
+// warned about, once, naming the dimension auto would take.
+TEST_CASE("program: --dimension auto takes one dimension per 30 sites, and a dimension too small for the sites is warned about", "[program]")
+{
+  Temp_dir dir;
+  const Soup sphere = octahedral_sphere(4);
+  write_mesh(dir / "sphere.off", sphere);
+  const std::string mesh = (dir / "sphere.off").string();
+
+  const Run automatic = run_program(dir, { mesh, "--random", "700", "--dimension", "auto", "--output", (dir / "auto.ply").string() });
+  const Run by_hand = run_program(dir, { mesh, "--random", "700", "--dimension", "24", "--output", (dir / "24.ply").string() });
+  const Run too_small = run_program(dir, { mesh, "--random", "700", "--output", (dir / "10.ply").string() });
+  const Run few_sites = run_program(dir, { mesh, "--random", "300", "--output", (dir / "300.ply").string() });
+  check_success(automatic);
+  check_success(by_hand);
+  check_success(too_small);
+  check_success(few_sites);
+  CHECK(same_files(dir / "auto.ply", dir / "24.ply"));
+  CHECK(different_files(dir / "auto.ply", dir / "10.ply"));
+  CHECK(automatic.err.find("warning") == std::string::npos);
+  CHECK(by_hand.err.find("warning") == std::string::npos);
+  CHECK(few_sites.err.find("warning") == std::string::npos);
+  CHECK(too_small.err == "surface_voronoi: warning: an embedding of dimension 10 resolves about 300 cells, fewer than the 700 sites: "
+                         "cells may come out in pieces (--dimension auto takes 24)\n");
+
+  const Run other_metric = run_program(dir, { mesh, "--random", "9", "--metric", "euclidean", "--dimension", "auto" });
+  CHECK(other_metric.code == 2);
+  const Run bad_word = run_program(dir, { mesh, "--random", "9", "--dimension", "automatic" });
+  CHECK(bad_word.code == 2);
+}
+
 TEST_CASE("program: every mesh format reads the same surface, and polygons are triangulated", "[program]")
 {
   Temp_dir dir;

@@ -3,13 +3,18 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
+#include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <test_meshes.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace svd_test;
@@ -135,4 +140,53 @@ TEST_CASE("valid dual: the Voronoi vertices of three cells are equally far from 
     for(const Point& q : site_points)
       CHECK(std::sqrt(CGAL::squared_distance(p, q)) >= d0 - 1e-9);
   }
+}
+
+// A thin plate with the geodesic metric: a cell reaches around the plate's rim to meet two
+// cells of the other side, and their dual triangle folds over the rim (flipped). The remedy is
+// a site on the rim; once there, Lloyd must not pull it back onto a side.
+TEST_CASE("valid dual: folds over a thin plate's rim get sites on the rim, and the dual becomes valid", "[dual][validity]")
+{
+  Mesh plate;
+  GEN::Slab_options o;
+  o.target_vertices = 2000;
+  GEN::make_thin_slab(plate, o);
+  SV::Geodesic_metric<Mesh> geodesic(plate);
+  const auto given = SV::lloyd_relaxation(plate, geodesic, SV::blue_noise_sites(plate, 100, CGAL::parameters::random_seed(1)),
+                                          CGAL::parameters::number_of_iterations(5)).sites;
+  const CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > before(plate, geodesic, given);
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > triangles;
+  SV::dual_triangulation(before, std::back_inserter(points), std::back_inserter(triangles));
+  REQUIRE(SV::validate_dual_triangulation(before, points, triangles).flipped_triangles > 0);
+
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_dual(plate, geodesic, given);
+  INFO(r.validity.reason());
+  CHECK(r.validity.is_valid());
+  REQUIRE(r.sites.size() == given.size() + r.sites_added);
+  for(std::size_t i = 0; i < given.size(); ++i) CHECK(r.sites[i] == given[i]);
+
+  // on the rim: on the plate's outline (the plate lies flat in the bounding box's two longest
+  // directions, its rim faces across the shortest), where a site at a Voronoi vertex, on a
+  // side, does not lie
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(plate);
+  std::array<double, 3> extent = {{ box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin() }};
+  const int flat = int(std::min_element(extent.begin(), extent.end()) - extent.begin());
+  const double band = 1e-9 * (extent[0] + extent[1] + extent[2]);
+  std::size_t on_rim = 0;
+  for(std::size_t i = given.size(); i < r.sites.size(); ++i)
+  {
+    const Point p = CGAL::Polygon_mesh_processing::construct_point(r.sites[i], plate);
+    bool near = false;
+    for(int k = 0; k < 3; ++k)
+      if(k != flat) near |= (p[k] - box.min(k) <= band || box.max(k) - p[k] <= band);
+    on_rim += near;
+  }
+  CHECK(on_rim > 0);
+  // the oracle: the dual of the returned sites, built and checked again
+  const CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > after(plate, geodesic, r.sites);
+  points.clear();
+  triangles.clear();
+  SV::dual_triangulation(after, std::back_inserter(points), std::back_inserter(triangles));
+  CHECK(SV::validate_dual_triangulation(after, points, triangles).is_valid());
 }

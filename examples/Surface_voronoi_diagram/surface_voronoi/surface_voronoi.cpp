@@ -4,7 +4,7 @@
 // surface_voronoi: the command-line program. Its interface is a contract (see the manual):
 //
 //   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
-//                   [--dimension D] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
+//                   [--dimension D|auto] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
 //                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K]
 //                   [--threads N] [--stats]
 //
@@ -108,6 +108,7 @@ struct Arguments
   long long random = -1, blue_noise = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false, no_refine = false;
+  bool dimension_auto = false;   // --dimension auto: biharmonic_dimension_for_sites()
   bool valid_dual = false;   // sites added until the dual is a valid mesh
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
@@ -118,7 +119,7 @@ struct Arguments
 
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
-  "                       [--dimension D] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
+  "                       [--dimension D|auto] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
   "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K] [--threads N] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
@@ -157,7 +158,13 @@ Arguments parse(int argc, char** argv)
     else if(arg == "--seed") { a.seed = static_cast<unsigned int>(parse_integer(arg, value(), 0, 4294967295LL)); a.seed_given = true; }
     else if(arg == "--metric") a.metric = value();
     else if(arg == "--no-refine") a.no_refine = true;
-    else if(arg == "--dimension") { a.dimension = static_cast<std::size_t>(parse_integer(arg, value(), 1, 10000)); a.dimension_given = true; }
+    else if(arg == "--dimension")
+    {
+      const std::string d = value();
+      a.dimension_given = true;
+      if(d == "auto") a.dimension_auto = true;
+      else a.dimension = static_cast<std::size_t>(parse_integer(arg, d, 1, 10000));
+    }
     else if(arg == "--insert-sites") a.insert_sites = true;
     else if(arg == "--output") a.output = value();
     else if(arg == "--sites-out") a.sites_out = value();
@@ -612,22 +619,31 @@ int run_main(int argc, char** argv)
               + ": the two sites are at the same surface point");
     fail(1, args.mesh + ": " + p.message);
   }
+  // --dimension auto grows with the sites given; a dimension that resolves fewer cells than
+  // there are sites is warned about
+  const std::size_t asked_dimension = args.dimension_auto ? SV::biharmonic_dimension_for_sites(locations.size()) : args.dimension;
+  if(args.metric == "biharmonic" && !args.dimension_auto && locations.size() > SV::biharmonic_resolved_sites(asked_dimension))
+    std::cerr << "surface_voronoi: warning: an embedding of dimension " << asked_dimension << " resolves about "
+              << SV::biharmonic_resolved_sites(asked_dimension) << " cells, fewer than the " << locations.size()
+              << " sites: cells may come out in pieces (--dimension auto takes "
+              << SV::biharmonic_dimension_for_sites(locations.size()) << ")" << std::endl;
   // The biharmonic embedding needs more vertices than eigenpairs (on the mesh it is built
-  // on): without --dimension, the default is lowered to what the mesh allows, with a note.
+  // on): without a number for --dimension, the dimension is lowered to what the mesh allows,
+  // with a note.
   auto dimension_for = [&](const Mesh& m) {
-    if(args.metric != "biharmonic") return args.dimension;
+    if(args.metric != "biharmonic") return asked_dimension;
     const std::size_t largest = CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
-    if(args.dimension <= largest) return args.dimension;
+    if(asked_dimension <= largest) return asked_dimension;
     const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
     const std::string what = "the mesh has " + std::to_string(nv) + " vertices and " + std::to_string(components)
                              + " component(s): an embedding of dimension at most " + std::to_string(largest);
-    if(args.dimension_given || largest == 0)
+    if((args.dimension_given && !args.dimension_auto) || largest == 0)
       fail(1, args.mesh + ": " + what + (largest == 0 ? " (none is possible)" : "")
-              + ", too few for dimension " + std::to_string(args.dimension));
+              + ", too few for dimension " + std::to_string(asked_dimension));
     static std::size_t noted = 0;
     if(noted != largest)
-      std::cerr << "surface_voronoi: note: " << what << " (the default is " << args.dimension << "): using "
-                << largest << std::endl;
+      std::cerr << "surface_voronoi: note: " << what << " (" << (args.dimension_auto ? "--dimension auto asks for " : "the default is ")
+                << asked_dimension << "): using " << largest << std::endl;
     noted = largest;
     return largest;
   };
@@ -708,6 +724,8 @@ int run_main(int argc, char** argv)
               [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(refined, metric, refinement.sites, np); });
           r.validity = on_refined.validity;
           r.rounds += on_refined.rounds;
+          r.nothing_to_cut = on_refined.nothing_to_cut;
+          r.no_room_for_sites = on_refined.no_room_for_sites;
           if(on_refined.sites_added == 0) break;
           // the added sites, as locations of the input mesh (the refined faces lie in its faces)
           for(std::size_t i = r.sites.size(); i < on_refined.sites.size(); ++i)
@@ -726,7 +744,8 @@ int run_main(int argc, char** argv)
       if(!r.validity.is_valid())
         fail(1, args.mesh + ": no valid dual reached (" + std::to_string(r.sites_added) + " sites added, at most "
                 + std::to_string(max_added) + "): " + r.validity.reason()
-                + (r.nothing_to_cut ? "; no cell is left to cut: the sites are too few for the surface's topology, or a component holds none" : ""));
+                + (r.nothing_to_cut ? "; no cell is left to cut: the sites are too few for the surface's topology, or a component holds none" : "")
+                + (r.no_room_for_sites ? "; every site it would add falls beside an existing one" : ""));
       sites_added = r.sites_added;
       for(std::size_t i = given; i < r.sites.size(); ++i)
       {

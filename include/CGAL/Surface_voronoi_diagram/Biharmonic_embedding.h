@@ -21,6 +21,7 @@
 
 #include <CGAL/disable_warnings.h>
 
+#include <CGAL/Surface_voronoi_diagram/biharmonic_dimension.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>

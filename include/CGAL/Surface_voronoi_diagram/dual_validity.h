@@ -84,8 +84,10 @@ struct Dual_validity
   std::size_t degenerate_triangles = 0;
   /// triangles facing against the surface: against the normal of every face around the
   /// Voronoi vertex the triangle is dual to (so that one across a crease or a thin rim, which
-  /// faces along neither side, is not taken for flipped), or, for a triangle no Voronoi vertex
-  /// makes, against the sum of the normals of its sites' faces
+  /// faces along neither side, is not taken for flipped) and against the face of one of its
+  /// sites at least (a triangle facing along the surface at all its corners lies on it, even
+  /// when its Voronoi vertex is past a bend, as an obtuse triangle's is); for a triangle no
+  /// Voronoi vertex makes, against the sum of the normals of its sites' faces
   std::size_t flipped_triangles = 0;
   /// the indices (in the range checked) of the flipped triangles
   std::vector<std::size_t> flipped_triangle_indices;
@@ -208,6 +210,7 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
     const auto at_vertex = surface_normals.find(key);
     const bool flipped = (at_vertex != surface_normals.end() && !at_vertex->second.empty())
         ? std::all_of(at_vertex->second.begin(), at_vertex->second.end(), against)
+          && std::any_of(t.begin(), t.end(), [&](std::size_t s) { return against(internal::site_face_normal(*data.mesh, data.sites[s])); })
         : against(internal::sum_of_site_face_normals(*data.mesh, data.sites, t));
     if(flipped)
     {

@@ -9,8 +9,8 @@
 //
 // Sites added until the dual triangulation is a valid mesh: where the cells lack the
 // closed-ball property, the widest cell involved gets a new site at its point farthest from
-// its own site; a flipped dual triangle, one at its Voronoi vertex. The added sites are
-// relaxed among the given ones, which stay in place.
+// its own site; a flipped dual triangle, one on the rim its fold crosses (or at its Voronoi
+// vertex). The sites that cut cells are relaxed among the given ones, which stay in place.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_VALID_DUAL_SITES_H
@@ -56,6 +56,10 @@ struct Valid_dual_result
   /// triangulation's topology alone (the sites are too few for the surface's genus, or a
   /// component holds no site)
   bool nothing_to_cut = false;
+  /// whether it stopped, the dual still not valid, because every site it would add fell
+  /// beside an existing one (a fold at a point where the surface is not smooth, such as the
+  /// tip of a cone, that no site nearby resolves)
+  bool no_room_for_sites = false;
   /// the validity of the dual of the final sites; `validity.is_valid()` tells whether a valid
   /// dual was reached
   Dual_validity validity;
@@ -153,6 +157,66 @@ voronoi_vertex_locations(const Diagram& diagram)
   return out;
 }
 
+// A dual triangle facing against the surface at its Voronoi vertex, where one of its sites
+// lies on the other side of a thin part (its cell wraps around the rim to reach the vertex),
+// folds the remesh over that rim: no site resolves the rim. The remedy is a site on the rim
+// itself, where that cell's faces turn from facing along the vertex's side to facing against
+// it: the point of such an edge nearest to the vertex. Returns false when the triangle has no
+// site across a rim (then the surface bends more than its sites resolve, and the vertex
+// itself takes the new site).
+template <class TriangleMesh, class Diagram>
+bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& triangle,
+                      const CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>& vertex,
+                      CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>& rim)
+{
+  const auto& data = Diagram_access::data(diagram);
+  const auto& mesh = *data.mesh;
+  auto normal = [&](std::size_t f) {
+    const auto& t = mesh.triangles[f];
+    return CGAL::cross_product(mesh.points[t[1]] - mesh.points[t[0]], mesh.points[t[2]] - mesh.points[t[0]]);
+  };
+  const std::size_t fv = get(mesh.face_index, vertex.first);
+  const auto up = normal(fv);
+  const Point_d at = mesh.point_at(fv, vertex.second);
+  bool found = false;
+  double best = 0;
+  for(std::size_t s : triangle)
+  {
+    if(normal(data.sites[s].face) * up >= 0) continue;
+    // the faces the cell of s reaches
+    std::vector<std::size_t> cell_faces;
+    for(const Partition::Piece& piece : data.partition.pieces)
+      if(piece.site == s) cell_faces.push_back(piece.face);
+    std::sort(cell_faces.begin(), cell_faces.end());
+    cell_faces.erase(std::unique(cell_faces.begin(), cell_faces.end()), cell_faces.end());
+    for(std::size_t f : cell_faces)
+    {
+      if(normal(f) * up < 0) continue;
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t g = mesh.neighbors[f][k];
+        if(g == Indexed_mesh<TriangleMesh>::none || normal(g) * up >= 0
+           || !std::binary_search(cell_faces.begin(), cell_faces.end(), g)) continue;
+        // the point of edge k of f nearest to the vertex
+        const Point_d& a = mesh.points[mesh.triangles[f][k]];
+        const Point_d& b = mesh.points[mesh.triangles[f][(k + 1) % 3]];
+        const auto ab = b - a;
+        const double len2 = ab * ab;
+        const double u = len2 > 0 ? (std::min)(1., (std::max)(0., ((at - a) * ab) / len2)) : 0.;
+        const Point_d p = a + u * ab;
+        const double d = CGAL::squared_distance(p, at);
+        if(!found || d < best)
+        {
+          found = true;
+          best = d;
+          rim = location_in_face(mesh, f, p);
+        }
+      }
+    }
+  }
+  return found;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
@@ -163,10 +227,17 @@ voronoi_vertex_locations(const Diagram& diagram)
 /// property (a cell that is not a disk, two cells sharing several arcs, three meeting at
 /// several Voronoi vertices), the widest cell involved (the one whose farthest piece is
 /// farthest from its site) gets a new site at that piece: a cell wrapping around a rim or a
-/// limb is cut there. Each cell gets one new site a round. A flipped dual triangle gets a new
-/// site at its Voronoi vertex, where the surface bends more than its sites resolve. The
-/// sites added so far are then relaxed by Lloyd steps in which the given sites stay in place.
-/// The given sites keep their positions and indices; the added ones follow them.
+/// limb is cut there. Each cell gets one new site a round. A flipped dual triangle (see
+/// `Dual_validity::flipped_triangles`) folds over a thin part when one of its cells reaches
+/// around a rim to its Voronoi vertex: it gets a new site on that rim (the point nearest to
+/// the vertex of an edge where the cell's faces turn from facing along the vertex's side to
+/// facing against it); with no such rim, the surface bends more than its sites resolve, and
+/// the new site is at the Voronoi vertex. No new site is placed closer than a tenth of the
+/// mean spacing of the sites to another (it would make a sliver cell); a round that can place
+/// none ends the loop (`no_room_for_sites`). The sites that cut cells are then relaxed by
+/// Lloyd steps in which the given sites, and those on rims and Voronoi vertices, stay in place.
+/// The given sites keep their positions and indices; the added ones follow them, those that
+/// stay in place first (their order may change from round to round).
 ///
 /// \tparam ConcurrencyTag the concurrency tag of the diagrams built; default `CGAL::Sequential_tag`
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
@@ -213,6 +284,7 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
   const std::size_t max_rounds = 64;
 
   Valid_dual_result<TriangleMesh> result;
+  std::size_t first_moving = given;
   for(;;)
   {
     const Diagram diagram(tm, metric, sites, np);
@@ -237,9 +309,35 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     for(std::size_t s : v.cells_not_disks) widest({ s });
     for(const auto& p : v.pairs_in_several_arcs) widest({ p.first, p.second });
     for(const auto& t : v.triples_at_several_vertices) widest({ t[0], t[1], t[2] });
-    // a flipped triangle gets a site at its Voronoi vertex, where the surface bends more
-    // than its three sites resolve (or its widest cell, if no vertex of three cells makes it)
-    std::vector<Location> at_vertices;
+    // a new site where one already is would merge into it and change nothing; one placed on a
+    // rim or at a Voronoi vertex right beside another (closer than a tenth of the mean
+    // spacing) would make a sliver cell where the fold it is for stays (at a point where the
+    // surface is not smooth), so it is not placed either
+    const auto& mesh = *internal::Diagram_access::data(diagram).mesh;
+    const double same = CGAL::square(1e-9 * mesh.bbox_diagonal);
+    const double beside = 0.01 * mesh.total_area / double(sites.size());
+    std::vector<internal::Point_d> taken;
+    for(const auto& s : internal::Diagram_access::data(diagram).sites) taken.push_back(mesh.point_at(s.face, s.barycentric));
+    // new sites that cut a cell are relaxed with the others added before; those placed on a
+    // rim or at a Voronoi vertex stay there, as Lloyd would pull them back off the rim
+    std::vector<Location> moving, staying;
+    std::size_t tried = 0;
+    auto add = [&](const Location& l, std::vector<Location>& to) {
+      ++tried;
+      if(result.sites_added + moving.size() + staying.size() >= max_added) return true;
+      const internal::Point_d p = mesh.point_at(get(mesh.face_index, l.first), l.second);
+      const double tolerance = (&to == &staying) ? beside : same;
+      for(const internal::Point_d& q : taken)
+        if(CGAL::squared_distance(p, q) <= tolerance) return false;
+      taken.push_back(p);
+      to.push_back(l);
+      return true;
+    };
+    for(std::size_t s = 0; s < cut.size(); ++s)
+      if(cut[s]) add(farthest[s], moving);
+    // a flipped triangle gets a site on the rim its fold crosses, or else at its Voronoi
+    // vertex, where the surface bends more than its three sites resolve (or its widest cell
+    // is cut, if no vertex of three cells makes it)
     if(!v.flipped_triangle_indices.empty())
     {
       const auto vertices = internal::voronoi_vertex_locations<TriangleMesh>(diagram);
@@ -248,33 +346,32 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
         std::array<std::size_t, 3> key = triangles[k];
         std::sort(key.begin(), key.end());
         const auto at = vertices.find(key);
-        if(at != vertices.end()) at_vertices.push_back(at->second);
-        else widest({ key[0], key[1], key[2] });
+        Location rim;
+        if(at == vertices.end())
+        {
+          std::size_t best = key[0];
+          for(std::size_t s : key)
+            if(reach[s] > reach[best]) best = s;
+          if(reach[best] > 0) add(farthest[best], moving);
+        }
+        else if(!internal::rim_site_of_flip<TriangleMesh>(diagram, key, at->second, rim) || !add(rim, staying))
+          add(at->second, staying);
       }
     }
-    std::size_t added = 0;
-    for(std::size_t s = 0; s < cut.size() && result.sites_added + added < max_added; ++s)
-      if(cut[s])
-      {
-        sites.push_back(farthest[s]);
-        ++added;
-      }
-    for(const Location& l : at_vertices)
-      if(result.sites_added + added < max_added)
-      {
-        sites.push_back(l);
-        ++added;
-      }
-    if(added == 0)
+    if(moving.empty() && staying.empty())
     {
-      result.nothing_to_cut = true;
+      (tried == 0 ? result.nothing_to_cut : result.no_room_for_sites) = true;
       break;
     }
-    result.sites_added += added;
+    result.sites_added += moving.size() + staying.size();
     ++result.rounds;
+    // the given sites, the added ones that stay, then those that move
+    sites.insert(sites.begin() + std::ptrdiff_t(first_moving), staying.begin(), staying.end());
+    first_moving += staying.size();
+    sites.insert(sites.end(), moving.begin(), moving.end());
     if(relax > 0)
       sites = lloyd_relaxation<ConcurrencyTag>(tm, metric, sites,
-                  parameters::first_moving_site(given, np).number_of_iterations(relax)).sites;
+                  parameters::first_moving_site(first_moving, np).number_of_iterations(relax)).sites;
   }
   result.sites = sites;
   return result;

@@ -185,6 +185,20 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
     if(t.second > 1) triples_at_several_vertices.push_back(t.first);
 }
 
+// The unit normal of a site's face (zero for a degenerate face).
+template <class TriangleMesh>
+std::array<double, 3> site_face_normal(const Indexed_mesh<TriangleMesh>& mesh, const Site& site)
+{
+  const auto& t = mesh.triangles[site.face];
+  const Point_d& a = mesh.points[t[0]];
+  const Point_d& b = mesh.points[t[1]];
+  const Point_d& c = mesh.points[t[2]];
+  const Vector_d normal = CGAL::cross_product(b - a, c - a);
+  const double length = std::sqrt(normal.squared_length());
+  if(!(length > 0)) return {{ 0., 0., 0. }};
+  return {{ normal.x() / length, normal.y() / length, normal.z() / length }};
+}
+
 // The sum of the unit normals of the faces of a triangle's three sites.
 template <class TriangleMesh>
 std::array<double, 3> sum_of_site_face_normals(const Indexed_mesh<TriangleMesh>& mesh, const std::vector<Site>& sites,
@@ -193,16 +207,8 @@ std::array<double, 3> sum_of_site_face_normals(const Indexed_mesh<TriangleMesh>&
   std::array<double, 3> sum = {{ 0., 0., 0. }};
   for(std::size_t i : triangle)
   {
-    const auto& t = mesh.triangles[sites[i].face];
-    const Point_d& a = mesh.points[t[0]];
-    const Point_d& b = mesh.points[t[1]];
-    const Point_d& c = mesh.points[t[2]];
-    const Vector_d normal = CGAL::cross_product(b - a, c - a);
-    const double length = std::sqrt(normal.squared_length());
-    if(!(length > 0)) continue;
-    sum[0] += normal.x() / length;
-    sum[1] += normal.y() / length;
-    sum[2] += normal.z() / length;
+    const std::array<double, 3> n = site_face_normal(mesh, sites[i]);
+    for(int k = 0; k < 3; ++k) sum[k] += n[k];
   }
   return sum;
 }
