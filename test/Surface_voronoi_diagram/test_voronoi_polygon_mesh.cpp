@@ -185,37 +185,62 @@ TEST_CASE("voronoi polygon mesh: a torus tiled by disk cells keeps Euler charact
   CHECK(euler_characteristic(out) == 0);
 }
 
-TEST_CASE("voronoi polygon mesh: a cell around the tube is reported, the rest stays a valid mesh", "[voronoi_polygon_mesh]")
+TEST_CASE("voronoi polygon mesh: a cell around a hole is reported, the rest stays a valid mesh", "[voronoi_polygon_mesh]")
 {
-  const double major = 1.0, minor = 0.4, pi = std::acos(-1.);
-  Mesh torus;
-  GEN::make_torus(torus, major, minor, 90, 36);
-  Euclidean e(torus);
-  // three rings of four sites around the tube near angle 0, and one lone site opposite:
-  // the lone site's cell is a band around the tube (an annulus), the others are disks
-  std::vector<Point> sites;
-  for(double u : { -0.5, 0.0, 0.5 })
-    for(int k = 0; k < 4; ++k) sites.push_back(torus_point(major, minor, u, (k + 0.5 * (u > 0)) * pi / 2));
-  sites.push_back(torus_point(major, minor, pi, 0.0));
-  const std::size_t lone = sites.size() - 1;
-  const Euclidean_diagram vd(torus, e, sites);
+  // A loop of breaklines around the square [0.4, 0.6]^2 of a unit square, one site inside it;
+  // outside, the site just below it is the nearest all around it: its cell is the unit square
+  // minus the small one, an annulus, not a disk
+  Mesh grid;
+  GEN::make_planar_grid(grid, 41, 41, 1.0, 1.0);   // spacing 0.025
+  const double lo = 0.4, hi = 0.6;
+  auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+  auto on_square = [&](const Point& p) {
+    const bool in_x = p.x() > lo - 1e-9 && p.x() < hi + 1e-9, in_y = p.y() > lo - 1e-9 && p.y() < hi + 1e-9;
+    return ((near(p.x(), lo) || near(p.x(), hi)) && in_y) || ((near(p.y(), lo) || near(p.y(), hi)) && in_x);
+  };
+  auto loop = grid.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+  for(Mesh::Edge_index ed : grid.edges())
+    loop[ed] = on_square(grid.point(grid.source(grid.halfedge(ed)))) && on_square(grid.point(grid.target(grid.halfedge(ed))));
+  const std::vector<Point> sites = { Point(0.5, 0.5, 0), Point(0.5, 0.2, 0), Point(0.05, 0.95, 0), Point(0.95, 0.95, 0) };
+  Euclidean e(grid);
+  const Euclidean_diagram vd(grid, e, sites, CGAL::parameters::edge_is_constrained_map(loop));
+  REQUIRE(vd.cell_area(0) == Approx(0.04).epsilon(1e-12));
 
   Mesh out;
   auto site = out.add_property_map<Mesh::Face_index, std::size_t>("f:site", 0).first;
   const std::vector<std::size_t> not_written = SV::make_voronoi_polygon_mesh(vd, out, CGAL::parameters::face_patch_map(site));
-  CHECK(not_written == std::vector<std::size_t>{ lone });
-  CHECK(out.number_of_faces() == sites.size() - 1);
+  CHECK(not_written == std::vector<std::size_t>{ 1 });
+  CHECK(out.number_of_faces() == 3);
   CHECK(CGAL::is_valid_polygon_mesh(out));
-  CHECK_FALSE(CGAL::is_closed(out));
-  // the torus without a band around its tube is a cylinder: two border loops, Euler 0
+  for(Mesh::Face_index f : out.faces()) CHECK(site[f] != 1);
+  // two components left, each a disk: the small square, and the two upper cells
   CHECK(number_of_border_cycles(out) == 2);
-  CHECK(euler_characteristic(out) == 0);
-  for(Mesh::Face_index f : out.faces()) CHECK(site[f] != lone);
+  CHECK(euler_characteristic(out) == 2);
+  // the small square's face is the breakline loop: its corners among its vertices, area 0.04
+  for(Mesh::Face_index f : out.faces())
+  {
+    if(site[f] != 0) continue;
+    std::vector<Point> p;
+    for(Mesh::Vertex_index v : vertices_around_face(out.halfedge(f), out)) p.push_back(out.point(v));
+    std::size_t on = 0;
+    double twice = 0;
+    for(std::size_t k = 0; k < p.size(); ++k)
+    {
+      on += on_square(p[k]);
+      twice += p[k].x() * p[(k + 1) % p.size()].y() - p[(k + 1) % p.size()].x() * p[k].y();
+    }
+    CHECK(on == p.size());
+    CHECK(twice / 2 == Approx(0.04).epsilon(1e-12));
+  }
 
-  // three sites around the torus: three bands, nothing written, nothing left over
+  // three sites around a torus: three bands, nothing written, nothing left over
+  const double major = 1.0, minor = 0.4, pi = std::acos(-1.);
+  Mesh torus;
+  GEN::make_torus(torus, major, minor, 90, 36);
+  Euclidean et(torus);
   std::vector<Point> three;
   for(double u : { 0.0, 2 * pi / 3, 4 * pi / 3 }) three.push_back(torus_point(major, minor, u, 0.0));
-  const Euclidean_diagram bands(torus, e, three);
+  const Euclidean_diagram bands(torus, et, three);
   Polyhedron p;
   CHECK(SV::make_voronoi_polygon_mesh(bands, p) == std::vector<std::size_t>{ 0, 1, 2 });
   CHECK(num_faces(p) == 0);
@@ -248,3 +273,4 @@ TEST_CASE("voronoi polygon mesh: on a planar patch the faces are the cells, the 
     CHECK(twice / 2 == Approx(vd.cell_area(std::size_t(site[f]))).epsilon(1e-9));
   }
 }
+

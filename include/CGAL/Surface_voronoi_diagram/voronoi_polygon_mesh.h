@@ -164,6 +164,11 @@ std::vector<std::size_t> make_voronoi_polygon_mesh(const Diagram& diagram, Polyg
     const Halfedge start = first[s];
     Halfedge h = start;
     bool closed = false;
+    if(start == Halfedge())
+    {
+      not_written.push_back(s);
+      continue;
+    }
     for(std::size_t steps = 0; steps < mesh.number_of_halfedges() && !closed; ++steps)
     {
       polygon.push_back(vertex_of(mesh.source(h), std::int64_t(s)));
