@@ -274,3 +274,42 @@ TEST_CASE("voronoi polygon mesh: on a planar patch the faces are the cells, the 
   }
 }
 
+
+TEST_CASE("voronoi polygon mesh: where two faces only touch at a point, each gets its own vertex", "[voronoi_polygon_mesh]")
+{
+  // A diamond of breaklines standing on the bottom side of a unit square, on grid diagonals,
+  // with no site inside: the unreached diamond touches the border at its lowest corner only.
+  // Around that point: the left cell, the diamond, the right cell, the outside.
+  Mesh grid;
+  GEN::make_planar_grid(grid, 41, 41, 1.0, 1.0);   // spacing 0.025; the diagonals line up
+  auto on_diamond = [](const Point& p) { return std::abs(std::abs(p.x() - 0.5) + std::abs(p.y() - 0.1) - 0.1) < 1e-9; };
+  auto loop = grid.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+  std::size_t marked = 0;
+  for(Mesh::Edge_index ed : grid.edges())
+    marked += (loop[ed] = on_diamond(grid.point(grid.source(grid.halfedge(ed)))) && on_diamond(grid.point(grid.target(grid.halfedge(ed)))));
+  REQUIRE(marked == 16);
+  const std::vector<Point> sites = { Point(0.2, 0.2, 0), Point(0.8, 0.2, 0), Point(0.5, 0.8, 0) };
+  Euclidean e(grid);
+  const Euclidean_diagram vd(grid, e, sites, CGAL::parameters::edge_is_constrained_map(loop));
+  REQUIRE(vd.unreached_area() == Approx(0.02).epsilon(1e-12));
+
+  Mesh out;
+  CHECK(SV::make_voronoi_polygon_mesh(vd, out).empty());
+  CHECK(out.number_of_faces() == 3);
+  CHECK(CGAL::is_valid_polygon_mesh(out));
+  // the corner is two vertices, one per face touching there, so that no vertex is pinched:
+  // at most one border halfedge into each vertex
+  std::size_t at_corner = 0, pinched = 0;
+  for(Mesh::Vertex_index v : out.vertices())
+  {
+    at_corner += (out.point(v) == Point(0.5, 0, 0));
+    std::size_t border_in = 0;
+    for(Mesh::Halfedge_index h : halfedges_around_target(out.halfedge(v), out)) border_in += out.is_border(h);
+    pinched += (border_in > 1);
+  }
+  CHECK(at_corner == 2);
+  CHECK(pinched == 0);
+  // the square minus a diamond on its side, cut open at the touching point: a disk
+  CHECK(number_of_border_cycles(out) == 1);
+  CHECK(euler_characteristic(out) == 1);
+}
