@@ -28,4 +28,7 @@ run graph_algorithms --
 run polyhedron_diagram --
 run user_metric --
 run vertex_point_map --
+run voronoi_polygon_mesh -- voronoi_cells.off
+run bisector_polylines -- bisectors.polylines.txt
+run site_maps -- site_maps.ply
 echo "all examples ran; outputs in $build/run"

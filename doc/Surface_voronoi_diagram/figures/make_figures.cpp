@@ -24,6 +24,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <functional>
+#include <set>
+#include <utility>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -218,6 +220,109 @@ void remeshing_figure(const std::string& dir)
   save(dir, "svd_remeshing.png", beside({svd_figures::render_diagram(diagram, cells), dual_image}));
 }
 
+// The cells out as a polygon mesh, as polylines and Voronoi vertices, and as labels of the
+// input's faces: one figure each, all on the same torus diagram.
+typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Euclidean_diagram;
+
+// The Voronoi diagram as a polygon mesh (left: the diagram; right: its polygon mesh, each
+// face fanned from its centroid for the rasterizer, which fills planar polygons only, with
+// the faces' own edges as lines and the Voronoi vertices as dots).
+void polygon_mesh_figure(const std::string& dir, const Euclidean_diagram& diagram, const Render_options& o)
+{
+  Mesh cells;
+  auto site = cells.add_property_map<Mesh::Face_index, int>("f:site", -1).first;
+  auto voronoi = cells.add_property_map<Mesh::Vertex_index, bool>("v:voronoi", false).first;
+  if(!SV::make_voronoi_polygon_mesh(diagram, cells, CGAL::parameters::face_patch_map(site).vertex_is_constrained_map(voronoi)).empty())
+    throw std::runtime_error("a cell of the polygon mesh figure is not a disk");
+  std::vector<K::Point_3> voronoi_points;
+  for(Mesh::Vertex_index v : cells.vertices())
+    if(voronoi[v]) voronoi_points.push_back(cells.point(v));
+  auto polygon_edge = cells.add_property_map<Mesh::Edge_index, bool>("e:polygon", true).first;
+  const std::vector<Mesh::Face_index> polygons(cells.faces().begin(), cells.faces().end());
+  for(Mesh::Face_index f : polygons)
+  {
+    K::Vector_3 sum(0, 0, 0);
+    std::size_t corners = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(cells.halfedge(f), cells)) { sum = sum + (cells.point(v) - CGAL::ORIGIN); ++corners; }
+    const int s = site[f];
+    const Mesh::Halfedge_index spoke = CGAL::Euler::add_center_vertex(cells.halfedge(f), cells);
+    cells.point(cells.target(spoke)) = CGAL::ORIGIN + sum / double(corners);
+    for(Mesh::Halfedge_index h : CGAL::halfedges_around_target(spoke, cells))
+    {
+      site[cells.face(h)] = s;
+      polygon_edge[cells.edge(h)] = false;
+    }
+  }
+  Render_options flat = o;
+  flat.crease_angle = 0;
+  flat.site_radius = 2.0;
+  Render_options with_sites = o;
+  with_sites.site_radius = 2.0;
+  save(dir, "svd_polygon_mesh.png",
+       beside({svd_figures::render_diagram(diagram, with_sites),
+               svd_figures::render_arrangement(cells, site, voronoi_points, flat, CGAL::parameters::edge_is_constrained_map(polygon_edge))}));
+}
+
+// The bisector polylines and the Voronoi vertices on the bare surface: the lines drawn are
+// the edges of the arrangement between consecutive points of a polyline.
+void polylines_figure(const std::string& dir, const Euclidean_diagram& diagram, const Render_options& o)
+{
+  std::vector<SV::Bisector_polyline<K::Point_3> > polylines;
+  std::vector<SV::Voronoi_vertex<K::Point_3> > vertices;
+  SV::bisector_polylines(diagram, std::back_inserter(polylines));
+  SV::voronoi_vertices(diagram, std::back_inserter(vertices));
+  std::set<std::pair<K::Point_3, K::Point_3> > segments;
+  for(const auto& polyline : polylines)
+    for(std::size_t k = 0; k + 1 < polyline.points.size(); ++k)
+    {
+      segments.insert(std::make_pair(polyline.points[k], polyline.points[k + 1]));
+      segments.insert(std::make_pair(polyline.points[k + 1], polyline.points[k]));
+    }
+  Mesh arrangement;
+  SV::make_arrangement(diagram, arrangement);
+  auto on_polyline = arrangement.add_property_map<Mesh::Edge_index, bool>("e:polyline", false).first;
+  for(Mesh::Edge_index e : arrangement.edges())
+    on_polyline[e] = segments.count(std::make_pair(arrangement.point(arrangement.source(arrangement.halfedge(e))),
+                                                   arrangement.point(arrangement.target(arrangement.halfedge(e))))) > 0;
+  std::vector<K::Point_3> points;
+  for(const auto& v : vertices) points.push_back(v.point);
+  Render_options lines = o;
+  lines.site_radius = 2.0;
+  save(dir, "svd_polylines.png",
+       svd_figures::render_arrangement(arrangement, CGAL::Constant_property_map<Mesh::Face_index, int>(-1), points, lines,
+                                       CGAL::parameters::edge_is_constrained_map(on_polyline)));
+}
+
+// Labels of the input: each face a cell covers whole in its cell's colour, the faces a
+// bisector cuts in grey, the input's edges drawn (left); the diagram on the same mesh (right).
+void site_maps_figure(const std::string& dir, const Euclidean_diagram& diagram, const Render_options& o)
+{
+  const Mesh& mesh = diagram.triangle_mesh();
+  std::vector<int> face_site(mesh.number_of_faces(), -1);
+  SV::compute_face_sites(diagram, CGAL::make_property_map(face_site));
+  Render_options thin = o;
+  thin.edge_width = 0.75;
+  thin.site_radius = 0;
+  thin.crease_angle = 0;
+  save(dir, "svd_site_maps.png",
+       beside({svd_figures::render_arrangement(mesh, CGAL::make_property_map(face_site), std::vector<K::Point_3>(), thin,
+                                               CGAL::parameters::edge_is_constrained_map(CGAL::Constant_property_map<Mesh::Edge_index, bool>(true))),
+               svd_figures::render_diagram(diagram, o)}));
+}
+
+void cell_output_figures(const std::string& dir)
+{
+  Mesh coarse;
+  GEN::make_torus(coarse, 1.0, 0.4, 48, 18);
+  SV::Euclidean_embedding<Mesh> metric(coarse);
+  const SV::Lloyd_result<Mesh> relaxed = SV::lloyd_relaxation(coarse, metric, SV::blue_noise_sites(coarse, 40, CGAL::parameters::random_seed(5)), CGAL::parameters::number_of_iterations(5));
+  const Euclidean_diagram diagram(coarse, metric, relaxed.sites);
+  const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
+  polygon_mesh_figure(dir, diagram, o);
+  polylines_figure(dir, diagram, panel(480, 360, {{-0.3, -1.0, -1.0}}));
+  site_maps_figure(dir, diagram, o);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -238,6 +343,7 @@ int main(int argc, char** argv)
     breaklines_figure(dir);
     lloyd_figure(dir);
     remeshing_figure(dir);
+    cell_output_figures(dir);
   }
   catch(const std::exception& e)
   {

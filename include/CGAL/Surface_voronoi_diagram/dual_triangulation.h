@@ -20,6 +20,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/arrangement.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Labelled_arrangement.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -31,21 +32,6 @@
 
 namespace CGAL {
 namespace Surface_voronoi {
-namespace internal {
-
-// The cells around a vertex, each run of faces of one cell once, from the labels of the faces
-// in their order around it (a run across the start counted once): the cycle whose fan
-// dual_triangulation() makes, and validate_dual_triangulation() checks, at a Voronoi vertex.
-inline void cells_in_circular_order(const std::vector<std::int64_t>& labels, std::vector<std::int64_t>& cycle)
-{
-  cycle.clear();
-  for(std::int64_t s : labels)
-    if(cycle.empty() || cycle.back() != s) cycle.push_back(s);
-  while(cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
-}
-
-} // namespace internal
-
 /// \ingroup PkgSurfaceVoronoiDiagramOutputs
 /// Writes the dual triangulation of `diagram` as a polygon soup: `points` receives the sites
 /// (in site order) and `triangles` one triangle per Voronoi vertex of the arrangement, its

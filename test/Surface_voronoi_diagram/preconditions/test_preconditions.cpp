@@ -16,11 +16,13 @@
 #include <CGAL/Surface_voronoi_diagram/Vertex_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+#include <CGAL/property_map.h>
 
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -151,6 +153,14 @@ TEST_CASE("preconditions: queries and outputs", "[preconditions]")
   REQUIRE(cancelled.is_cancelled());
   Mesh out;
   require_precondition([&] { SV::make_arrangement(cancelled, out); }, "cancelled");
+  require_precondition([&] { SV::make_voronoi_polygon_mesh(cancelled, out); }, "cancelled");
+  std::vector<SV::Bisector_polyline<K::Point_3> > polylines;
+  require_precondition([&] { SV::bisector_polylines(cancelled, std::back_inserter(polylines)); }, "cancelled");
+  std::vector<SV::Voronoi_vertex<K::Point_3> > vertices;
+  require_precondition([&] { SV::voronoi_vertices(cancelled, std::back_inserter(vertices)); }, "cancelled");
+  std::vector<int> labels(num_faces(m) + num_vertices(m));
+  require_precondition([&] { SV::compute_vertex_sites(cancelled, CGAL::make_property_map(labels)); }, "cancelled");
+  require_precondition([&] { SV::compute_face_sites(cancelled, CGAL::make_property_map(labels)); }, "cancelled");
 }
 
 TEST_CASE("preconditions: the metrics", "[preconditions]")

@@ -22,6 +22,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Labelled_arrangement.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 
 #include <CGAL/Surface_mesh.h>
@@ -40,9 +41,7 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-// A cell is a closed disk when it is one piece, touches itself at no vertex (its faces around
-// each vertex are one run) and has Euler characteristic V - E + F = 1 (a connected surface of
-// genus g with b boundary loops has 2 - 2g - b). Two cells share several arcs when the
+// Cells not closed disks: find_cells_not_disks(). Two cells share several arcs when the
 // bisector edges between them form several components; three cells meet several times when
 // several Voronoi vertices (inside the surface, exactly three cells around) have them.
 template <class Diagram>
@@ -61,32 +60,20 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   const std::int64_t border = -2;
   auto label = [&](Halfedge h) { return arrangement.is_border(h) ? border : site[arrangement.face(h)]; };
 
-  std::vector<long> euler(n, 0);
-  std::vector<std::uint8_t> not_disk(n, 0), has_face(n, 0);
-  Disjoint_sets pieces(arrangement.number_of_faces());
-  for(Mesh::Face_index f : arrangement.faces())
-    if(site[f] >= 0)
-    {
-      ++euler[std::size_t(site[f])];
-      has_face[std::size_t(site[f])] = 1;
-    }
+  find_cells_not_disks(arrangement, site, n, cells_not_disks);
 
-  // edges: once for each cell beside them; between two cells, an arc's piece
+  // edges between two cells: an arc's piece
   std::vector<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> > bisector_edges;
   for(Mesh::Edge_index e : arrangement.edges())
   {
     const Halfedge h = arrangement.halfedge(e), o = arrangement.opposite(h);
     const std::int64_t a = label(h), b = label(o);
-    if(a >= 0) --euler[std::size_t(a)];
-    if(b >= 0 && b != a) --euler[std::size_t(b)];
-    if(a >= 0 && a == b)
-      pieces.unite(std::size_t(arrangement.face(h)), std::size_t(arrangement.face(o)));
-    else if(a >= 0 && b >= 0)
+    if(a >= 0 && b >= 0 && a != b)
       bisector_edges.emplace_back(std::size_t((std::min)(a, b)), std::size_t((std::max)(a, b)),
                                   std::size_t(arrangement.source(h)), std::size_t(arrangement.target(h)));
   }
 
-  // vertices: once for each cell around them; a cell in several runs around one touches itself
+  // Voronoi vertices
   std::map<std::array<std::size_t, 3>, std::size_t> vertices_of_triple;
   std::vector<std::int64_t> ring, cycle;
   std::vector<std::array<double, 3> > normals;
@@ -96,16 +83,6 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
     if(arrangement.is_isolated(v)) continue;
     ring.clear();
     for(Halfedge h : CGAL::halfedges_around_target(v, arrangement)) ring.push_back(label(h));
-    for(std::size_t k = 0; k < ring.size(); ++k)
-    {
-      const std::int64_t s = ring[k];
-      if(s < 0 || std::find(ring.begin(), ring.begin() + k, s) != ring.begin() + k) continue;   // once per cell
-      ++euler[std::size_t(s)];
-      std::size_t runs = 0;
-      for(std::size_t j = 0; j < ring.size(); ++j)
-        runs += (ring[j] == s && ring[(j + ring.size() - 1) % ring.size()] != s);
-      if(runs > 1) not_disk[std::size_t(s)] = 1;
-    }
     // a Voronoi vertex inside the surface: the cells around, each once in circular order
     if(std::find(ring.begin(), ring.end(), border) != ring.end()) continue;
     cells_in_circular_order(ring, cycle);
@@ -135,19 +112,6 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
     }
     if(cycle.size() > 3) ++vertices_of_more_than_three_cells;
   }
-
-  // the cells' pieces, through the edges with the cell on both sides
-  std::vector<std::size_t> first_root(n, std::size_t(-1));
-  for(Mesh::Face_index f : arrangement.faces())
-  {
-    if(site[f] < 0) continue;
-    const std::size_t s = std::size_t(site[f]), root = pieces.find(std::size_t(f));
-    if(first_root[s] == std::size_t(-1)) first_root[s] = root;
-    else if(first_root[s] != root) not_disk[s] = 1;
-  }
-  cells_not_disks.clear();
-  for(std::size_t s = 0; s < n; ++s)
-    if(!has_face[s] || not_disk[s] || euler[s] != 1) cells_not_disks.push_back(s);
 
   // the arcs between two cells: components of their bisector edges, joined at vertices
   std::sort(bisector_edges.begin(), bisector_edges.end());
