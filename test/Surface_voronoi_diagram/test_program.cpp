@@ -2093,6 +2093,41 @@ TEST_CASE("program: --breaklines reads mesh edges and refuses a pair that is not
   check_one_line_error(junk, 1);
 }
 
+// --sharp-edges 60 on a unit cube (its normals turn by 90 degrees at every edge) makes the 12
+// edges breaklines: each of six sites, one per side and off its centre, keeps exactly its side
+// (area 1). Without it, or with an angle above 90, the sites off centre reach across edges.
+TEST_CASE("program: --sharp-edges makes the edges where the surface turns by more than the angle breaklines", "[program]")
+{
+  Temp_dir dir;
+  write_mesh(dir / "box.off", cube());
+  write_bytes(dir / "sites.txt", "0.1 0.1 1\n0.9 0.9 0\n0 0.1 0.8\n1 0.9 0.2\n0.8 0 0.9\n0.2 1 0.1\n");
+  auto run_with = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = { (dir / "box.off").string(), "--sites", (dir / "sites.txt").string(), "--metric",
+                                      "euclidean", "--output", (dir / name).string() };
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Run r = run_program(dir, args);
+    check_success(r);
+    return check_output(dir / name, cube(), 6);
+  };
+  const Arrangement_summary sharp = run_with("sharp.ply", { "--sharp-edges", "60" });
+  for(int site = 0; site < 6; ++site)
+  {
+    INFO("site " << site);
+    CHECK(std::abs(sharp.area_per_site.at(site) - 1.0) <= 1e-9);
+  }
+  const Arrangement_summary plain = run_with("plain.ply", {});
+  const Arrangement_summary blunt = run_with("blunt.ply", { "--sharp-edges", "100" });
+  bool some_side_shared = false;
+  for(int site = 0; site < 6; ++site) some_side_shared |= std::abs(plain.area_per_site.at(site) - 1.0) > 1e-3;
+  CHECK(some_side_shared);
+  CHECK(same_files(dir / "plain.ply", dir / "blunt.ply"));
+  for(const std::string bad : { "0", "180", "-5", "ninety" })
+  {
+    const Run r = run_program(dir, { (dir / "box.off").string(), "--random", "5", "--sharp-edges", bad });
+    check_one_line_error(r, 2);
+  }
+}
+
 TEST_CASE("program: sites file: a missing sites file is an error naming it", "[program]")
 {
   Temp_dir dir;

@@ -5,7 +5,7 @@
 //
 //   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
 //                   [--dimension D|auto] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
-//                   [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K]
+//                   [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K]
 //                   [--threads N] [--stats]
 //
 // Exit codes: 0 success (also when some area is reached by no site, or when a power weight
@@ -40,6 +40,7 @@
 #include "write_arrangement_PLY.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Random.h>
 #include <CGAL/property_map.h>
@@ -114,13 +115,14 @@ struct Arguments
   std::size_t lloyd = 0;
   std::size_t threads = 0;   // 0: all cores
   double max_site_distance = 0.01;
+  double sharp_edges = -1;   // --sharp-edges ANGLE (degrees): breaklines where the normals turn more
   int scale = 0;   // the mesh is computed on scaled by 2^-scale (normalization_exponent())
 };
 
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
   "                       [--dimension D|auto] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--dual OUT.off] [--valid-dual] [--lloyd K] [--threads N] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K] [--threads N] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -175,6 +177,11 @@ Arguments parse(int argc, char** argv)
     }
     else if(arg == "--stats") a.stats = true;
     else if(arg == "--breaklines") a.breaklines = value();
+    else if(arg == "--sharp-edges")
+    {
+      a.sharp_edges = parse_number(arg, value());
+      if(!(a.sharp_edges > 0 && a.sharp_edges < 180)) fail(2, "--sharp-edges expects an angle in degrees between 0 and 180 (exclusive)");
+    }
     else if(arg == "--dual") a.dual = value();
     else if(arg == "--valid-dual") a.valid_dual = true;
     else if(arg == "--lloyd") a.lloyd = static_cast<std::size_t>(parse_integer(arg, value(), 0, 10000));
@@ -526,6 +533,16 @@ int run_main(int argc, char** argv)
       breakline[edge(h.first, mesh)] = true;
     }
   }
+  // --sharp-edges: the edges whose faces' normals turn by more than the angle are breaklines
+  // too (PMP::detect_sharp_edges(); it marks the border as well, which needs no breakline)
+  if(args.sharp_edges > 0)
+  {
+    auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+    CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, args.sharp_edges, sharp);
+    for(Mesh::Edge_index e : mesh.edges())
+      if(sharp[e] && !mesh.is_border(e)) breakline[e] = true;
+    mesh.remove_property_map(sharp);
+  }
 
   // sites as surface locations, remembering the sites file's lines for error messages
   std::vector<std::size_t> lines;
@@ -771,7 +788,7 @@ int run_main(int argc, char** argv)
       // marks the edges of a working copy that lie on an input breakline
       auto carry_breaklines = [&](Mesh& copy, const auto& input_face) {
         auto marked = copy.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
-        if(args.breaklines.empty()) return;
+        if(args.breaklines.empty() && args.sharp_edges <= 0) return;
         for(auto e : edges(copy))
         {
           const auto h = halfedge(e, copy), o = opposite(h, copy);
