@@ -232,15 +232,9 @@ TEST_CASE("bisector polylines: the area no site reaches is the second side", "[b
   Mesh grid;
   GEN::make_planar_grid(grid, 21, 21, 1.0, 1.0);   // spacing 0.05
   const double lo = 0.25, hi = 0.75;
-  auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };
-  auto on_square = [&](const Point& p) {
-    const bool in_x = p.x() > lo - 1e-9 && p.x() < hi + 1e-9, in_y = p.y() > lo - 1e-9 && p.y() < hi + 1e-9;
-    return ((near(p.x(), lo) || near(p.x(), hi)) && in_y) || ((near(p.y(), lo) || near(p.y(), hi)) && in_x);
-  };
+  auto on_square = [&](const Point& p) { return on_square_outline(p, lo, hi); };
   auto inside = [&](const Point& p) { return p.x() > lo && p.x() < hi && p.y() > lo && p.y() < hi; };
-  auto loop = grid.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
-  for(Mesh::Edge_index ed : grid.edges())
-    loop[ed] = on_square(grid.point(grid.source(grid.halfedge(ed)))) && on_square(grid.point(grid.target(grid.halfedge(ed))));
+  const auto loop = mark_square_outline(grid, lo, hi);
   const std::vector<Point> sites = { Point(0.8, 0.8, 0), Point(0.1, 0.5, 0), Point(0.9, 0.1, 0) };
   Euclidean e(grid);
   const Euclidean_diagram vd(grid, e, sites, CGAL::parameters::edge_is_constrained_map(loop));

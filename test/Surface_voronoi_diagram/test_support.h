@@ -103,6 +103,24 @@ void check_invariants(const Diagram& vd, bool unweighted = true)
   CHECK(border_length(out) == Approx(border_length(tm)).epsilon(1e-9).margin(1e-12));
 }
 
+// Whether p lies on the outline of the square [lo, hi]^2 in x and y (to 1e-9).
+inline bool on_square_outline(const Point& p, double lo, double hi)
+{
+  auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+  const bool in_x = p.x() > lo - 1e-9 && p.x() < hi + 1e-9, in_y = p.y() > lo - 1e-9 && p.y() < hi + 1e-9;
+  return ((near(p.x(), lo) || near(p.x(), hi)) && in_y) || ((near(p.y(), lo) || near(p.y(), hi)) && in_x);
+}
+
+// The edges of `m` on the outline of the square [lo, hi]^2, marked in a new edge map
+// "e:breakline": a closed loop of breaklines on a planar grid whose lines include lo and hi.
+inline Mesh::Property_map<Mesh::Edge_index, bool> mark_square_outline(Mesh& m, double lo, double hi)
+{
+  auto loop = m.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+  for(Mesh::Edge_index e : m.edges())
+    loop[e] = on_square_outline(m.point(m.source(m.halfedge(e))), lo, hi) && on_square_outline(m.point(m.target(m.halfedge(e))), lo, hi);
+  return loop;
+}
+
 } // namespace svd_test
 
 #endif
