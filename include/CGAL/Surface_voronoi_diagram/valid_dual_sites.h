@@ -299,11 +299,16 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     std::vector<double> reach;
     internal::farthest_pieces<TriangleMesh>(diagram, farthest, reach);
     std::vector<std::uint8_t> cut(sites.size(), 0);
-    auto widest = [&](std::initializer_list<std::size_t> cells) {
+    // the cell among `cells` reaching farthest from its site, or none if none reaches at all
+    auto widest_of = [&](std::initializer_list<std::size_t> cells) {
       std::size_t best = *cells.begin();
       for(std::size_t s : cells)
         if(reach[s] > reach[best]) best = s;
-      if(reach[best] > 0) cut[best] = 1;
+      return reach[best] > 0 ? best : internal::no_site;
+    };
+    auto widest = [&](std::initializer_list<std::size_t> cells) {
+      const std::size_t best = widest_of(cells);
+      if(best != internal::no_site) cut[best] = 1;
     };
     const Dual_validity& v = result.validity;
     for(std::size_t s : v.cells_not_disks) widest({ s });
@@ -313,11 +318,12 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     // rim or at a Voronoi vertex right beside another (closer than a tenth of the mean
     // spacing) would make a sliver cell where the fold it is for stays (at a point where the
     // surface is not smooth), so it is not placed either
-    const auto& mesh = *internal::Diagram_access::data(diagram).mesh;
+    const auto& data = internal::Diagram_access::data(diagram);
+    const auto& mesh = *data.mesh;
     const double same = CGAL::square(1e-9 * mesh.bbox_diagonal);
     const double beside = 0.01 * mesh.total_area / double(sites.size());
     std::vector<internal::Point_d> taken;
-    for(const auto& s : internal::Diagram_access::data(diagram).sites) taken.push_back(mesh.point_at(s.face, s.barycentric));
+    for(const auto& s : data.sites) taken.push_back(mesh.point_at(s.face, s.barycentric));
     // new sites that cut a cell are relaxed with the others added before; those placed on a
     // rim or at a Voronoi vertex stay there, as Lloyd would pull them back off the rim
     std::vector<Location> moving, staying;
@@ -349,10 +355,8 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
         Location rim;
         if(at == vertices.end())
         {
-          std::size_t best = key[0];
-          for(std::size_t s : key)
-            if(reach[s] > reach[best]) best = s;
-          if(reach[best] > 0) add(farthest[best], moving);
+          const std::size_t best = widest_of({ key[0], key[1], key[2] });
+          if(best != internal::no_site) add(farthest[best], moving);
         }
         else if(!internal::rim_site_of_flip<TriangleMesh>(diagram, key, at->second, rim) || !add(rim, staying))
           add(at->second, staying);

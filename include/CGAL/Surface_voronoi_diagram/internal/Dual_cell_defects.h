@@ -18,7 +18,6 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/arrangement.h>
-#include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -51,16 +50,15 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
                             std::size_t& vertices_of_more_than_three_cells,
                             std::map<std::array<std::size_t, 3>, std::vector<std::array<double, 3> > >& surface_normals_of_triple)
 {
-  typedef CGAL::Surface_mesh<Point_d> Mesh;
+  typedef Labelled_arrangement::Mesh Mesh;
   typedef Mesh::Halfedge_index Halfedge;
-  Mesh arrangement;
-  auto site = arrangement.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -1).first;
-  make_arrangement(diagram, arrangement, CGAL::parameters::face_patch_map(site));
+  const Labelled_arrangement labelled(diagram);
+  const Mesh& arrangement = labelled.mesh();
   const std::size_t n = diagram.number_of_sites();
-  const std::int64_t border = -2;
-  auto label = [&](Halfedge h) { return arrangement.is_border(h) ? border : site[arrangement.face(h)]; };
+  const std::int64_t border = Labelled_arrangement::border;
+  auto label = [&](Halfedge h) { return labelled.label(h); };
 
-  find_cells_not_disks(arrangement, site, n, cells_not_disks);
+  find_cells_not_disks(arrangement, labelled.site_map(), n, cells_not_disks);
 
   // edges between two cells: an arc's piece
   std::vector<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> > bisector_edges;
@@ -81,8 +79,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   for(Mesh::Vertex_index v : arrangement.vertices())
   {
     if(arrangement.is_isolated(v)) continue;
-    ring.clear();
-    for(Halfedge h : CGAL::halfedges_around_target(v, arrangement)) ring.push_back(label(h));
+    labelled.labels_around(v, ring);
     // a Voronoi vertex inside the surface: the cells around, each once in circular order
     if(std::find(ring.begin(), ring.end(), border) != ring.end()) continue;
     cells_in_circular_order(ring, cycle);
