@@ -1,7 +1,9 @@
 // Tests of CGAL/Surface_voronoi_diagram/lloyd_relaxation.h: centroidal relaxation and its energy.
 #include "test_support.h"
 
+#include <CGAL/Surface_voronoi_diagram/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <test_meshes.h>
 
@@ -57,4 +59,67 @@ TEST_CASE("lloyd: Euclidean propagation and the biharmonic metric relax and stay
   // the biharmonic energy is reported, not minimized: the centroid is taken in space, which
   // is not the minimizer of the biharmonic energy; it stays finite and positive
   for(double x : rb.energies) CHECK((x > 0 && std::isfinite(x)));
+}
+
+namespace {
+
+// Lloyd's diagrams measure their cells on the per-face cuts, without stitching them: the
+// measures must be those of the stitched partition, up to rounding.
+template <class Metric, class NP>
+void check_cut_measures(const Mesh& m, Metric& metric, const std::vector<Location<Mesh> >& sites, const NP& np)
+{
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
+  const Diagram stitched(m, metric, sites, np);
+  const Diagram on_cuts(m, metric, sites, SV::parameters::cells_only(true, np));
+  REQUIRE(stitched.statistics().broken_cells == 0);
+  // the cuts decided here, so the measures do come from them, not from a partition
+  REQUIRE(SV::internal::Diagram_access::data(on_cuts).measures.valid);
+  REQUIRE(SV::internal::Diagram_access::data(on_cuts).partition.pieces.empty());
+  const double area = stitched.surface_area();
+  const double scale = std::sqrt(area);
+  double total = 0;
+  for(std::size_t i = 0; i < sites.size(); ++i)
+  {
+    CHECK(std::abs(on_cuts.cell_area(i) - stitched.cell_area(i)) <= 1e-12 * area);
+    CHECK(std::sqrt(CGAL::squared_distance(on_cuts.cell_centroid(i), stitched.cell_centroid(i))) <= 1e-9 * scale);
+    total += on_cuts.cell_area(i);
+  }
+  CHECK(total + on_cuts.unreached_area() == Approx(area).epsilon(1e-12));
+  CHECK(on_cuts.energy() == Approx(stitched.energy()).epsilon(1e-10));
+  CHECK(on_cuts.energy() > 0);
+}
+
+} // namespace
+
+TEST_CASE("lloyd: cells measured on the cuts are those of the stitched partition", "[lloyd]")
+{
+  Mesh m;
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 2500;
+  GEN::make_thin_lampshade(m, lo);
+  const auto sites = area_uniform_locations(m, 70, 5);
+  SECTION("Euclidean")
+  {
+    Euclidean e(m);
+    check_cut_measures(m, e, sites, CGAL::parameters::default_values());
+  }
+  SECTION("Euclidean power diagram")
+  {
+    Euclidean e(m);
+    std::vector<double> weights(sites.size());
+    for(std::size_t i = 0; i < weights.size(); ++i) weights[i] = 1e-4 * double(i % 7);
+    check_cut_measures(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
+  }
+  SECTION("biharmonic")
+  {
+    CGAL::Biharmonic_embedding<Mesh> b(m);
+    check_cut_measures(m, b, sites, CGAL::parameters::default_values());
+  }
+  SECTION("geodesic, weighted")
+  {
+    SV::Geodesic_metric<Mesh> g(m);
+    std::vector<double> weights(sites.size());
+    for(std::size_t i = 0; i < weights.size(); ++i) weights[i] = 1e-4 * double(i % 5);
+    check_cut_measures(m, g, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
+  }
 }

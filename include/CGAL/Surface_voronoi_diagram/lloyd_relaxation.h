@@ -100,7 +100,9 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 /// for the nearest point starts from the site's own face, and where several faces share the
 /// nearest point (on their common edge or vertex) the face found first from there is kept.
 /// The metric is built once by the caller: no embedding is computed again per iteration, and
-/// the diagrams of the iterations compute the cells only (no neighbours, no vertex owners).
+/// the diagrams of the iterations compute the cells only (no neighbours, no vertex owners),
+/// measuring their areas, centroids and energy on the per-face cuts without stitching them
+/// into a partition, once the cuts show every cell whole.
 ///
 /// \tparam ConcurrencyTag the concurrency tag of the diagrams built (see
 ///         `Surface_voronoi_diagram`); default: `CGAL::Sequential_tag`

@@ -39,12 +39,19 @@ void for_each_fan_triangle(const Partition& partition, const Partition::Piece& p
   }
 }
 
-/// the area-weighted centroid of every cell, in space; the site's own point for an empty cell
+/// the area-weighted centroid of every cell, in space; the site's own point for an empty cell;
+/// from the partition, or from the cuts' measures where the diagram has no partition
 template <class TriangleMesh>
 std::vector<Point_d> cell_centroids(const Diagram_data<TriangleMesh>& d)
 {
   const std::size_t n = d.sites.size();
   std::vector<double> a(n, 0.), c(3 * n, 0.);
+  if(d.measures.valid)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      a[i] = d.measures.area[i];
+      for(int j = 0; j < 3; ++j) c[3 * i + j] = d.measures.moment[i][j];
+    }
   for(const Partition::Piece& p : d.partition.pieces)
   {
     if(p.site == no_site) continue;
@@ -89,10 +96,11 @@ double squared_distance_in_face(const Diagram_data<TriangleMesh>& d, std::size_t
 
 /// The energy: exact for embeddings (|E(x) - E(s)|^2 is quadratic on a triangle, integrated
 /// with the edge-midpoint rule), the integral of the linearly interpolated squared distance
-/// for lazy metrics. Weights are not subtracted.
+/// for lazy metrics. Weights are not subtracted. Lloyd's diagrams computed it on the cuts.
 template <class TriangleMesh>
 double energy(const Diagram_data<TriangleMesh>& d)
 {
+  if(d.measures.valid) return d.measures.energy;
   const Indexed_mesh<TriangleMesh>& mesh = *d.mesh;
   double total = 0;
   for(const Partition::Piece& p : d.partition.pieces)

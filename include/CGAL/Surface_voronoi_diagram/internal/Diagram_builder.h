@@ -20,6 +20,7 @@
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_components.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
@@ -146,6 +147,17 @@ public:
       }
     }
     m_timer.stop("repair");
+    if(m_settings.cells_only && decided_on_cuts)
+    {
+      // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of
+      // the cells are taken on them, without a partition
+      d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, propagation.candidates, m_cuts, d.sites, embedding_of(m_fields)).run();
+      d.statistics.broken_cells = 0;
+      d.candidates = std::move(propagation.candidates);
+      summarize(regions_of_site);
+      m_timer.stop("cutting");
+      return progress(1.);
+    }
     stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
     m_timer.stop("cutting");
 
@@ -178,6 +190,10 @@ public:
   }
 
 private:
+  static const Embedding_values* embedding_of(const Embedding_values& fields) { return &fields; }
+  template <class Lazy>
+  static const Embedding_values* embedding_of(const Lazy&) { return nullptr; }
+
   bool progress(double fraction) const { return !m_callback || m_callback(fraction); }
 
   bool use_global_nearest() const
@@ -220,6 +236,11 @@ private:
     const std::size_t n = d.sites.size();
     d.cell_area.assign(n, 0.);
     d.cell_pieces.assign(n, 0);
+    if(d.measures.valid)
+    {
+      d.cell_area = d.measures.area;
+      s.unreached_area = d.measures.unreached_area;
+    }
     for(const Partition::Piece& p : d.partition.pieces)
     {
       if(p.site == no_site) s.unreached_area += p.area;

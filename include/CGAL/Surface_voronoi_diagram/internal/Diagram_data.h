@@ -20,6 +20,7 @@
 #include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
@@ -41,7 +42,8 @@ struct Diagram_data
   std::vector<std::size_t> merged_into;          // by site: the site owning its cell, or no_site
   std::unique_ptr<Embedding_values> embedding;   // embedding metrics only
   Candidate_lists candidates;                    // after propagation and repair
-  Partition partition;
+  Partition partition;                           // empty when the cells were measured on the cuts
+  Cell_measures measures;                        // Lloyd's diagrams: the cells measured on the cuts
   std::vector<double> cell_area;
   std::vector<std::size_t> cell_pieces;
   std::vector<std::size_t> vertex_site;          // owner of each mesh vertex
@@ -53,6 +55,7 @@ struct Diagram_data
   {
     candidates.clear();
     partition = Partition();
+    measures = Cell_measures();
     cell_area.assign(sites.size(), 0.);
     cell_pieces.assign(sites.size(), 0);
     vertex_site.assign(mesh ? mesh->number_of_vertices() : 0, no_site);

@@ -58,6 +58,12 @@ public:
 
   std::size_t size() const { return m_size; }
 
+  /// makes room for `n` more keys, so that the next `n` insertions keep the slots valid
+  void reserve_more(std::size_t n)
+  {
+    while(2 * (m_size + n) > m_slots.size()) grow();
+  }
+
   /// the slot of `key`, or null
   const Slot* find(Key key) const
   {

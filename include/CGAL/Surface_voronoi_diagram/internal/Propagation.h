@@ -55,7 +55,9 @@ public:
               const Blocked& blocked)
     : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked),
       m_epoch(mesh.number_of_faces(), 0), m_offers(mesh.number_of_faces())
-  {}
+  {
+    link_faces();
+  }
 
   Candidate_lists candidates;
   Propagation_statistics statistics;
@@ -173,33 +175,66 @@ private:
     return value;
   }
 
-  // Offers the field of `site` to face `f`, once per (site, face) and epoch, as brought across
-  // local edge `from_edge` of f. `from`, if given, is the site's candidate on the neighbouring
-  // face `from_face`, whose values at the two shared corners are taken instead of computed
-  // again (the same numbers: the field is a function of the vertex), which spares two of
-  // three lookups of a vertex's coordinates; the edge is then the one opposite the corner not
-  // shared.
-  void offer(std::uint32_t site, std::size_t f, std::uint8_t from_edge, const Candidate* from = nullptr,
-             std::size_t from_face = 0)
+  // What the propagation reads of a face when it leaves it, in one place: across local edge
+  // k, the neighbour (`none` across a breakline), where the edge's two corners are among the
+  // neighbour's corners, and the neighbour's third vertex.
+  struct Face_link
   {
-    if(!mark_offered(site, f)) return;
-    Candidate x(site, {{ 0., 0., 0. }}, from_edge);
-    if(from)
+    std::uint32_t neighbor[3];
+    std::uint32_t fresh_vertex[3];
+    std::uint8_t shared_corners[3];   // corner of f.c_k in the neighbour | that of f.c_(k+1) << 2
+  };
+  static constexpr std::uint32_t no_link = std::uint32_t(-1);
+
+  void link_faces()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    m_links.resize(nf);
+    for(std::size_t f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k)
       {
-        const std::size_t v = m_mesh.triangles[f][k];
-        int c = 0;
-        while(c < 3 && m_mesh.triangles[from_face][c] != v) ++c;
-        if(c < 3)
-          x.value[k] = from->value[c];
-        else
-        {
-          x.value[k] = m_fields.value(site, v);
-          x.from_edge = static_cast<std::uint8_t>((k + 1) % 3);
-        }
+        Face_link& l = m_links[f];
+        const std::size_t g = m_mesh.neighbors[f][k];
+        l.neighbor[k] = no_link;
+        l.fresh_vertex[k] = 0;
+        l.shared_corners[k] = 0;
+        if(g == Mesh::none || m_blocked(f, k)) continue;
+        const int a = m_mesh.corner_of(g, m_mesh.triangles[f][k]), b = m_mesh.corner_of(g, m_mesh.triangles[f][(k + 1) % 3]);
+        CGAL_assertion(a >= 0 && a < 3 && b >= 0 && b < 3 && a != b);
+        l.neighbor[k] = static_cast<std::uint32_t>(g);
+        l.fresh_vertex[k] = static_cast<std::uint32_t>(m_mesh.triangles[g][3 - a - b]);
+        l.shared_corners[k] = static_cast<std::uint8_t>(a | (b << 2));
       }
-    else
-      x.value = field_values(site, f);
+  }
+
+  // Offers the field of `site` to face `f`, once per (site, face) and epoch, as brought across
+  // local edge `from_edge` of f.
+  void offer(std::uint32_t site, std::size_t f, std::uint8_t from_edge)
+  {
+    if(!mark_offered(site, f)) return;
+    Candidate x(site, field_values(site, f), from_edge);
+    queue_unless_dominated(x, f);
+  }
+
+  // Offers the field of the candidate `from` on face `from_face` across the face's local edge
+  // k: its values at the two shared corners are taken instead of computed again (the same
+  // numbers: the field is a function of the vertex), which spares two of three lookups of a
+  // vertex's coordinates; the edge brought across is the one opposite the corner not shared.
+  void offer_across(const Candidate& from, std::size_t from_face, int k)
+  {
+    const Face_link& l = m_links[from_face];
+    const std::size_t f = l.neighbor[k];
+    if(!mark_offered(from.site, f)) return;
+    const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
+    Candidate x(from.site, {{ 0., 0., 0. }}, static_cast<std::uint8_t>((fresh + 1) % 3));
+    x.value[a] = from.value[k];
+    x.value[b] = from.value[(k + 1) % 3];
+    x.value[fresh] = m_fields.value(from.site, l.fresh_vertex[k]);
+    queue_unless_dominated(x, f);
+  }
+
+  void queue_unless_dominated(const Candidate& x, std::size_t f)
+  {
     // lists only grow: a field dominated now stays dominated, so do not queue it
     for(const Candidate& b : candidates[f])
       if(dominates(b, x)) { ++statistics.pruned; return; }
@@ -215,7 +250,7 @@ private:
       m_free_slots.pop_back();
       m_values[slot] = x.value;
     }
-    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), site, static_cast<std::uint32_t>(f), slot,
+    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f), slot,
                         x.from_edge });
   }
 
@@ -251,12 +286,9 @@ private:
       }
       list.push_back(x);
       ++statistics.admitted;
+      const Face_link& l = m_links[e.face];
       for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t g = m_mesh.neighbors[e.face][k];
-        if(g == Mesh::none || m_blocked(e.face, k) || banned(e.site, g)) continue;
-        offer(e.site, g, Candidate::at_site, &x, e.face);
-      }
+        if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(x, e.face, k);
     }
   }
 
@@ -264,6 +296,7 @@ private:
   const Fields& m_fields;
   const std::vector<std::size_t>& m_site_faces;
   Blocked m_blocked;
+  std::vector<Face_link> m_links;
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;
   std::vector<std::array<double, 3> > m_values;

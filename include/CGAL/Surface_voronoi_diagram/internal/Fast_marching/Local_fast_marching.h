@@ -195,11 +195,17 @@ private:
 
   void update_around(Front& front, std::uint32_t a, double da)
   {
-    for(std::uint32_t r = m_marching.ring_offsets[a]; r < m_marching.ring_offsets[a + 1]; ++r)
+    const std::uint32_t begin = m_marching.ring_offsets[a], end = m_marching.ring_offsets[a + 1];
+    // two slots per face around `a`, found once for both of its updates: room for them now,
+    // so that the slots stay valid through the loop
+    front.values.reserve_more(2 * std::size_t(end - begin));
+    for(std::uint32_t r = begin; r < end; ++r)
     {
       const typename Marching_mesh::Ring_face& rf = m_marching.ring[r];
-      update_corner(front, da, rf.next, rf.prev, rf.a_next, rf.a_prev, rf.opposite, rf.split_next);
-      update_corner(front, da, rf.prev, rf.next, rf.a_prev, rf.a_next, rf.opposite, rf.split_prev);
+      Slot& next = front.find_or_insert(rf.next);
+      Slot& prev = front.find_or_insert(rf.prev);
+      update_corner(front, da, next, prev, rf.a_next, rf.a_prev, rf.opposite, rf.split_next);
+      update_corner(front, da, prev, next, rf.a_prev, rf.a_next, rf.opposite, rf.split_prev);
     }
     // `a` may be the split vertex of obtuse corners elsewhere
     for(std::uint32_t r = m_marching.vertex_split_offsets[a]; r < m_marching.vertex_split_offsets[a + 1]; ++r)
@@ -211,17 +217,13 @@ private:
   }
 
   // updates corner c of a face (a, b, c) from a, just accepted with value da
-  void update_corner(Front& front, double da, std::uint32_t c, std::uint32_t b, double ac, double ab, double bc,
-                     std::uint32_t split)
+  void update_corner(Front& front, double da, Slot& c, const Slot& b, double ac, double ab, double bc, std::uint32_t split)
   {
-    // one probe for c: the slot found here stays valid, the lookups below do not insert
-    Slot& sc = front.find_or_insert(c);
-    if(sc.accepted) return;
+    if(c.accepted) return;
     double best = da + ac;
-    const double db = accepted_value(front, b);
-    if(db == db) best = (std::min)(best, point_source_update(ab, ac, bc, da, db));
+    if(b.accepted) best = (std::min)(best, point_source_update(ab, ac, bc, da, b.value));
     if(split != Marching_mesh::none) best = (std::min)(best, split_update(front, m_marching.splits[split]));
-    lower(front, sc, best);
+    lower(front, c, best);
   }
 
   // the updates of an obtuse corner through its two acute virtual triangles (c, a, d), (c, d, b)

@@ -22,6 +22,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
@@ -214,35 +215,14 @@ private:
         const std::size_t e = static_cast<std::size_t>(k.element);
         const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
         const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
-        const double* lo = values_of(f, k.sites[0]);
-        const double* hi = values_of(f, k.sites[1]);
-        const double da = lo[ca] - hi[ca], db = lo[cb] - hi[cb];
-        double t = da / (da - db);
-        t = (std::min)(1., (std::max)(0., t));
+        const double t = edge_crossing_parameter(values_of(f, k.sites[0]), values_of(f, k.sites[1]), ca, cb);
         const Point_d& pa = m_mesh.points[va];
         const Point_d& pb = m_mesh.points[vb];
         out.vertices[id] = Partition::Vertex{ pa + t * (pb - pa), Partition::ON_EDGE, e, t };
       }
       else
       {
-        const double* d0 = values_of(f, k.sites[0]);
-        const double* d1 = values_of(f, k.sites[1]);
-        const double* d2 = values_of(f, k.sites[2]);
-        // the barycentric point where the three fields are equal: r1 x r2 of the differences
-        const Vector_d r1(d0[0] - d1[0], d0[1] - d1[1], d0[2] - d1[2]);
-        const Vector_d r2(d0[0] - d2[0], d0[1] - d2[1], d0[2] - d2[2]);
-        const Vector_d c = CGAL::cross_product(r1, r2);
-        Barycentric b = {{ c.x(), c.y(), c.z() }};
-        double s = 0;
-        for(double& x : b) s += x;
-        if(is_well_conditioned(s, r1, r2))
-          for(double& x : b) x /= s;
-        else
-          b = exact_triple_point(f, k);
-        // rounding may push the point a hair outside its face: keep it on the face
-        double s2 = 0;
-        for(double& x : b) { x = (std::max)(0., x); s2 += x; }
-        for(double& x : b) x /= s2;
+        const Barycentric b = triple_point_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]));
         out.vertices[id] = Partition::Vertex{ m_mesh.point_at(f, b), Partition::IN_FACE, f, 0. };
       }
     });
@@ -250,49 +230,9 @@ private:
     for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
   }
 
-  // Whether the rounded sum s of r1 x r2 is far enough from its rounding error (a few ulps of
-  // |r1| |r2|) to divide by. It is not when two sites' fields differ by far less than the
-  // third's (two sites 1e-10 apart on a needle): r1 and r2 then round to the same vector.
-  static bool is_well_conditioned(double s, const Vector_d& r1, const Vector_d& r2)
-  {
-    const double n1 = std::abs(r1.x()) + std::abs(r1.y()) + std::abs(r1.z());
-    const double n2 = std::abs(r2.x()) + std::abs(r2.y()) + std::abs(r2.z());
-    const double bound = 64 * std::numeric_limits<double>::epsilon() * n1 * n2;
-    return std::isfinite(s) && std::isfinite(bound) && std::abs(s) > bound;
-  }
-
-  // The triple point computed with rationals, then rounded: for the ill-conditioned case only.
-  // Exact parallel bisectors have no triple point, and the cutter (deciding exactly) does not
-  // make one; the centroid is only a guard.
-  Barycentric exact_triple_point(std::size_t f, const Vertex_key& k) const
-  {
-    std::array<Exact_number, 3> e;
-    Barycentric b = {{ 1. / 3, 1. / 3, 1. / 3 }};
-    if(exact_triple_barycentric(f, k, e))
-      for(int c = 0; c < 3; ++c) b[c] = CGAL::to_double(e[c]);
-    return b;
-  }
-
-  // The barycentric coordinates where the three fields of a triple-point key are equal, in
-  // rationals; false when the bisectors are parallel.
   bool exact_triple_barycentric(std::size_t f, const Vertex_key& k, std::array<Exact_number, 3>& b) const
   {
-    const double* d0 = values_of(f, k.sites[0]);
-    const double* d1 = values_of(f, k.sites[1]);
-    const double* d2 = values_of(f, k.sites[2]);
-    std::array<Exact_number, 3> r1, r2;
-    for(int c = 0; c < 3; ++c)
-    {
-      r1[c] = Exact_number(d0[c]) - Exact_number(d1[c]);
-      r2[c] = Exact_number(d0[c]) - Exact_number(d2[c]);
-    }
-    b[0] = r1[1] * r2[2] - r1[2] * r2[1];
-    b[1] = r1[2] * r2[0] - r1[0] * r2[2];
-    b[2] = r1[0] * r2[1] - r1[1] * r2[0];
-    const Exact_number s = b[0] + b[1] + b[2];
-    if(CGAL::is_zero(s)) return false;
-    for(Exact_number& x : b) x = x / s;
-    return true;
+    return internal::exact_triple_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]), b);
   }
 
   // Where a vertex lies, exactly: at a corner, on an edge at parameter c[0], or in a face

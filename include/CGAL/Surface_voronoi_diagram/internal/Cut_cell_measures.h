@@ -1,0 +1,215 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The cells' areas, centroids and energy measured on the per-face cuts, without stitching
+// them into a partition: what Lloyd's diagrams need, once the cuts have decided that every
+// cell is whole. The vertices are placed as stitching places them (Bisector_points.h).
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUT_CELL_MEASURES_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUT_CELL_MEASURES_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// Per site: the area and the area-weighted sum of centroids of its cell; and the diagram's
+/// energy (see `energy()` in Cell_geometry.h for the quadrature, which is the same).
+struct Cell_measures
+{
+  bool valid = false;
+  std::vector<double> area;
+  std::vector<std::array<double, 3> > moment;
+  double energy = 0;
+  double unreached_area = 0;
+};
+
+template <class TriangleMesh>
+class Cut_cell_measurer
+{
+public:
+  typedef Indexed_mesh<TriangleMesh> Mesh;
+
+  Cut_cell_measurer(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts,
+                    const std::vector<Site>& sites, const Embedding_values* embedding)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_sites(sites), m_embedding(embedding)
+  {}
+
+  /// faces in order, pieces in order: the sums do not depend on threads
+  Cell_measures run()
+  {
+    Cell_measures out;
+    out.valid = true;
+    out.area.assign(m_sites.size(), 0.);
+    out.moment.assign(m_sites.size(), {{ 0., 0., 0. }});
+    Polygon polygon;
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      const Candidate_list& list = m_candidates[f];
+      if(list.empty())
+      {
+        out.unreached_area += m_mesh.face_areas[f];
+        continue;
+      }
+      const Face_cut& cut = m_cuts[f];
+      if(cut.whole_face || list.size() == 1)
+      {
+        const std::array<Polygon_vertex, 3> triangle = {{
+            Polygon_vertex{ m_mesh.corner(f, 0), {{ 1., 0., 0. }} },
+            Polygon_vertex{ m_mesh.corner(f, 1), {{ 0., 1., 0. }} },
+            Polygon_vertex{ m_mesh.corner(f, 2), {{ 0., 0., 1. }} } }};
+        add(out, f, 0, triangle.data(), triangle.size());
+        continue;
+      }
+      for(const Symbolic_piece& piece : cut.pieces)
+      {
+        polygon.clear();
+        for(const Symbolic_vertex& v : piece.vertices) polygon.push_back(place(f, piece.candidate, v));
+        add(out, f, piece.candidate, polygon.data(), polygon.size());
+      }
+    }
+    return out;
+  }
+
+private:
+  struct Polygon_vertex
+  {
+    Point_d point;
+    Barycentric b;
+  };
+  typedef std::vector<Polygon_vertex> Polygon;   // one buffer for all the pieces
+
+  Polygon_vertex place(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v) const
+  {
+    const Candidate_list& list = m_candidates[f];
+    Barycentric b = {{ 0., 0., 0. }};
+    if(v.kind == Symbolic_vertex::CORNER)
+    {
+      b[v.local] = 1.;
+      return Polygon_vertex{ m_mesh.points[m_mesh.triangles[f][v.local]], b };
+    }
+    if(v.kind == Symbolic_vertex::EDGE)
+    {
+      // as stitching does: along the edge's sorted vertices, the lower site's field first
+      const std::size_t e = m_mesh.edges[f][v.local];
+      const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
+      const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
+      const bool owner_low = list[owner].site < list[v.other].site;
+      const double* lo = list[owner_low ? owner : v.other].value.data();
+      const double* hi = list[owner_low ? v.other : owner].value.data();
+      const double t = edge_crossing_parameter(lo, hi, ca, cb);
+      const Point_d& pa = m_mesh.points[va];
+      const Point_d& pb = m_mesh.points[vb];
+      b[ca] = 1. - t;
+      b[cb] = t;
+      return Polygon_vertex{ pa + t * (pb - pa), b };
+    }
+    // the three fields in site order (lists are sorted by site), as stitching orders them
+    std::array<std::uint32_t, 3> c = {{ owner, v.other, v.third }};
+    std::sort(c.begin(), c.end());
+    b = triple_point_barycentric(list[c[0]].value.data(), list[c[1]].value.data(), list[c[2]].value.data());
+    return Polygon_vertex{ m_mesh.point_at(f, b), b };
+  }
+
+  // the squared distance to the site at barycentric point b of face f: a quadratic form in b
+  // for an embedding (its Gram matrix of corner offsets), else the interpolated values
+  struct Piece_field
+  {
+    std::array<std::array<double, 3>, 3> gram;
+    std::array<double, 3> corner_value;
+    bool quadratic;
+
+    double at(const Barycentric& b) const
+    {
+      if(!quadratic) return b[0] * corner_value[0] + b[1] * corner_value[1] + b[2] * corner_value[2];
+      double total = 0;
+      for(int j = 0; j < 3; ++j)
+        for(int k = 0; k < 3; ++k) total += b[j] * b[k] * gram[j][k];
+      return total;
+    }
+  };
+
+  Piece_field field_of(std::size_t f, const Candidate& x) const
+  {
+    Piece_field p;
+    p.quadratic = (m_embedding != nullptr);
+    if(!p.quadratic)
+    {
+      for(int k = 0; k < 3; ++k) p.corner_value[k] = x.value[k] + m_sites[x.site].weight;
+      return p;
+    }
+    const std::size_t d = m_embedding->dimension();
+    const double* s = m_embedding->site_coordinates(x.site);
+    std::array<const double*, 3> e;
+    for(int k = 0; k < 3; ++k) e[k] = m_embedding->vertex_coordinates(m_mesh.triangles[f][k]);
+    for(int j = 0; j < 3; ++j)
+      for(int k = j; k < 3; ++k)
+      {
+        double g = 0;
+        for(std::size_t c = 0; c < d; ++c) g += (e[j][c] - s[c]) * (e[k][c] - s[c]);
+        p.gram[j][k] = p.gram[k][j] = g;
+      }
+    return p;
+  }
+
+  static Barycentric midpoint(const Barycentric& a, const Barycentric& b)
+  {
+    return {{ (a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2 }};
+  }
+
+  void add(Cell_measures& out, std::size_t f, std::uint32_t candidate, const Polygon_vertex* polygon, std::size_t size) const
+  {
+    const Candidate& x = m_candidates[f][candidate];
+    const Piece_field field = field_of(f, x);
+    double& area = out.area[x.site];
+    std::array<double, 3>& moment = out.moment[x.site];
+    const Polygon_vertex& o = polygon[0];
+    for(std::size_t k = 1; k + 1 < size; ++k)
+    {
+      const Polygon_vertex& q = polygon[k];
+      const Polygon_vertex& r = polygon[k + 1];
+      const double t = triangle_area(o.point, q.point, r.point);
+      area += t;
+      for(int j = 0; j < 3; ++j) moment[j] += t * (o.point[j] + q.point[j] + r.point[j]) / 3.;
+      if(!(t > 0)) continue;
+      // the edge-midpoint rule, exact for the quadratic squared distance of an embedding
+      if(field.quadratic)
+        out.energy += t / 3. * (field.at(midpoint(o.b, q.b)) + field.at(midpoint(q.b, r.b)) + field.at(midpoint(r.b, o.b)));
+      else
+        out.energy += t / 3. * (field.at(o.b) + field.at(q.b) + field.at(r.b));
+    }
+  }
+
+  const Mesh& m_mesh;
+  const Candidate_lists& m_candidates;
+  const std::vector<Face_cut>& m_cuts;
+  const std::vector<Site>& m_sites;
+  const Embedding_values* m_embedding;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CUT_CELL_MEASURES_H
