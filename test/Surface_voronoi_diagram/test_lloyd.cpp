@@ -123,3 +123,58 @@ TEST_CASE("lloyd: cells measured on the cuts are those of the stitched partition
     check_cut_measures(m, g, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
   }
 }
+
+TEST_CASE("lloyd: a vertex density map draws the sites where it is high", "[lloyd][density]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 21, 21, 1.0, 1.0);
+  std::vector<double> density(num_vertices(m));
+  for(auto v : vertices(m)) density[v.idx()] = (m.point(v).x() > 0.5) ? 3. : 1.;
+  auto density_map = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
+  for(auto v : vertices(m)) density_map[v] = density[v.idx()];
+  Euclidean e(m);
+  const auto start = area_uniform_locations(m, 120, 11);
+  auto right_fraction = [&](const std::vector<Location<Mesh> >& sites) {
+    std::size_t right = 0;
+    for(const auto& l : sites) right += (point_of(l, m).x() > 0.5);
+    return double(right) / double(sites.size());
+  };
+  // Lloyd moves sites across the surface slowly: from area-uniform sites the density draws
+  // them to the right...
+  const auto drawn = SV::lloyd_relaxation(m, e, start, SV::parameters::vertex_density_map(density_map,
+                                          CGAL::parameters::number_of_iterations(40)));
+  CHECK(right_fraction(start) < 0.6);
+  CHECK(right_fraction(drawn.sites) > right_fraction(start) + 0.05);
+  // ...and from sites drawn with that density (3/4 on the right: three sites per unit area
+  // for one), it keeps them there, where relaxing without it spreads them out
+  const auto dense = SV::random_sites(m, 120, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(2)));
+  const auto kept = SV::lloyd_relaxation(m, e, dense, SV::parameters::vertex_density_map(density_map,
+                                         CGAL::parameters::number_of_iterations(40)));
+  const auto spread = SV::lloyd_relaxation(m, e, dense, CGAL::parameters::number_of_iterations(40));
+  CHECK(right_fraction(kept.sites) > 0.68);
+  CHECK(right_fraction(kept.sites) < 0.82);
+  CHECK(right_fraction(spread.sites) < right_fraction(kept.sites) - 0.05);
+
+  // a uniform density of any level moves the sites as no density does
+  const auto uniform = SV::lloyd_relaxation(m, e, start, SV::parameters::vertex_density_map(
+      CGAL::Constant_property_map<Mesh::Vertex_index, double>(7.), CGAL::parameters::number_of_iterations(3)));
+  const auto none = SV::lloyd_relaxation(m, e, start, CGAL::parameters::number_of_iterations(3));
+  for(std::size_t i = 0; i < start.size(); ++i)
+    CHECK(CGAL::squared_distance(point_of(uniform.sites[i], m), point_of(none.sites[i], m)) < 1e-20);
+}
+
+TEST_CASE("lloyd: a density map that is negative, not a number or zero everywhere is an error", "[lloyd][density]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 5, 5, 1.0, 1.0);
+  Euclidean e(m);
+  const auto start = area_uniform_locations(m, 5, 1);
+  for(const double bad : { -1., std::numeric_limits<double>::quiet_NaN(), 0. })
+  {
+    INFO("density " << bad);
+    auto density = m.add_property_map<Mesh::Vertex_index, double>("v:bad_density", bad == 0. ? 0. : 1.).first;
+    density[*vertices(m).begin()] = bad;
+    CHECK_THROWS_AS(SV::lloyd_relaxation(m, e, start, SV::parameters::vertex_density_map(density)), SV::Input_error);
+    m.remove_property_map(density);
+  }
+}

@@ -2128,6 +2128,36 @@ TEST_CASE("program: --sharp-edges makes the edges where the surface turns by mor
   }
 }
 
+// --curvature-density on a torus (R = 1, r = 0.4): its outer equator bends four times as much
+// as its inner one, so blue-noise sites drawn and relaxed with the flag crowd outwards more
+// than without it; the ratio must be a number of at least 1, and the flag needs sites drawn
+// or relaxed.
+TEST_CASE("program: --curvature-density puts more sites where the surface bends", "[program]")
+{
+  Temp_dir dir;
+  write_mesh(dir / "torus.off", torus_soup(1.0, 0.4, 80, 32));
+  auto outer_fraction = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = { (dir / "torus.off").string(), "--blue-noise", "400", "--metric", "euclidean",
+                                      "--lloyd", "5", "--sites-out", (dir / name).string() };
+    args.insert(args.end(), extra.begin(), extra.end());
+    check_success(run_program(dir, args));
+    const std::vector<V3> sites = read_sites_out(dir / name);
+    REQUIRE(sites.size() == 400);
+    std::size_t outer = 0;
+    for(const V3& p : sites) outer += (std::hypot(p[0], p[1]) > 1.0);
+    return double(outer) / double(sites.size());
+  };
+  const double plain = outer_fraction("plain.xyz", {});
+  const double dense = outer_fraction("dense.xyz", { "--curvature-density", "16" });
+  CHECK(plain < 0.68);   // the outer half has 0.63 of the area
+  CHECK(dense > plain + 0.08);
+  for(const std::string bad : { "0.5", "-1", "many" })
+    check_one_line_error(run_program(dir, { (dir / "torus.off").string(), "--random", "5", "--curvature-density", bad }), 2);
+  write_sites(dir / "sites.txt", { {{ 1.4, 0, 0 }} });
+  check_one_line_error(run_program(dir, { (dir / "torus.off").string(), "--sites", (dir / "sites.txt").string(),
+                                          "--curvature-density", "4" }), 2);
+}
+
 TEST_CASE("program: sites file: a missing sites file is an error naming it", "[program]")
 {
   Temp_dir dir;

@@ -102,3 +102,84 @@ TEST_CASE("sampling: areas that overflow or underflow (coordinates near 1e308, 1
   for(std::size_t i = 0; i < unit.size(); ++i) same_faces += (unit[i].first == big[i].first);
   CHECK(same_faces == unit.size());
 }
+
+namespace {
+// a unit square, sparse (density 1) left of x = 0.5 and dense (9) right of x = 0.6, with the
+// column between interpolating: 4.1 of its 4.6 units of mass lie right of x = 0.5
+std::vector<double> two_density_square(Mesh& m)
+{
+  GEN::make_planar_grid(m, 11, 11, 1.0, 1.0);
+  std::vector<double> density(num_vertices(m));
+  for(auto v : vertices(m)) density[v.idx()] = (m.point(v).x() > 0.55) ? 9. : 1.;
+  return density;
+}
+
+template <class Locations>
+double fraction_right_of_half(const Mesh& m, const Locations& ls)
+{
+  std::size_t right = 0;
+  for(const auto& l : ls) right += (point_of(l, m).x() > 0.5);
+  return double(right) / double(ls.size());
+}
+} // namespace
+
+TEST_CASE("sampling: random sites follow a vertex density map", "[sampling][density]")
+{
+  Mesh m;
+  const std::vector<double> density = two_density_square(m);
+  auto density_map = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
+  for(auto v : vertices(m)) density_map[v] = density[v.idx()];
+  const auto sites = SV::random_sites(m, 20000, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(3)));
+  REQUIRE(sites.size() == 20000);
+  // 4.1 / 4.6 of the mass; the standard deviation of the fraction is 0.0022
+  CHECK(std::abs(fraction_right_of_half(m, sites) - 4.1 / 4.6) < 0.01);
+  // a uniform map of any level samples as no map at all does, in distribution
+  const auto uniform = SV::random_sites(m, 20000, SV::parameters::vertex_density_map(
+      CGAL::Constant_property_map<Mesh::Vertex_index, double>(5.), CGAL::parameters::random_seed(3)));
+  CHECK(std::abs(fraction_right_of_half(m, uniform) - 0.5) < 0.01);
+  // the same seed gives the same sites
+  const auto again = SV::random_sites(m, 20000, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(3)));
+  CHECK(again == sites);
+}
+
+TEST_CASE("sampling: blue noise follows a vertex density map and spaces sites by it", "[sampling][density]")
+{
+  Mesh m;
+  const std::vector<double> density = two_density_square(m);
+  auto density_map = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
+  for(auto v : vertices(m)) density_map[v] = density[v.idx()];
+  const auto sites = SV::blue_noise_sites(m, 600, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(4)));
+  REQUIRE(sites.size() == 600);
+  CHECK(std::abs(fraction_right_of_half(m, sites) - 4.1 / 4.6) < 0.04);
+  // the spacing: three times closer where the density is nine times higher
+  std::vector<Location<Mesh> > left, right;
+  for(const auto& l : sites)
+  {
+    const double x = point_of(l, m).x();
+    if(x < 0.45) left.push_back(l);
+    if(x > 0.65) right.push_back(l);
+  }
+  const double ratio = min_distance(m, left) / min_distance(m, right);
+  CHECK(ratio > 2.);
+  CHECK(ratio < 4.5);
+  // without a map, the sides are alike
+  const auto plain = SV::blue_noise_sites(m, 600, CGAL::parameters::random_seed(4));
+  CHECK(std::abs(fraction_right_of_half(m, plain) - 0.5) < 0.05);
+}
+
+TEST_CASE("sampling: a density map that is negative, not a number or zero everywhere is an error, not a hang", "[sampling][density]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 5, 5, 1.0, 1.0);
+  for(const double bad : { -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), 0. })
+  {
+    INFO("density " << bad);
+    auto density = m.add_property_map<Mesh::Vertex_index, double>("v:bad_density", 1.).first;
+    density[*vertices(m).begin()] = bad;
+    if(bad == 0.)
+      for(auto v : vertices(m)) density[v] = 0.;
+    CHECK_THROWS_AS(SV::random_sites(m, 10, SV::parameters::vertex_density_map(density)), SV::Input_error);
+    CHECK_THROWS_AS(SV::blue_noise_sites(m, 10, SV::parameters::vertex_density_map(density)), SV::Input_error);
+    m.remove_property_map(density);
+  }
+}

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
+#include <CGAL/Surface_voronoi_diagram/curvature_density.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
@@ -59,6 +60,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -116,13 +118,15 @@ struct Arguments
   std::size_t threads = 0;   // 0: all cores
   double max_site_distance = 0.01;
   double sharp_edges = -1;   // --sharp-edges ANGLE (degrees): breaklines where the normals turn more
+  double curvature_density = 0;   // --curvature-density R: more sites where the surface bends, up to R times
   int scale = 0;   // the mesh is computed on scaled by 2^-scale (normalization_exponent())
 };
 
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
   "                       [--dimension D|auto] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
-  "                       [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K] [--threads N] [--stats]";
+  "                       [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K]\n"
+  "                       [--curvature-density R] [--threads N] [--stats]";
 
 double parse_number(const std::string& flag, const std::string& text)
 {
@@ -184,6 +188,12 @@ Arguments parse(int argc, char** argv)
     }
     else if(arg == "--dual") a.dual = value();
     else if(arg == "--valid-dual") a.valid_dual = true;
+    else if(arg == "--curvature-density")
+    {
+      a.curvature_density = parse_number(arg, value());
+      if(!(a.curvature_density >= 1))
+        fail(2, "--curvature-density expects the largest density ratio, a number of at least 1");
+    }
     else if(arg == "--lloyd") a.lloyd = static_cast<std::size_t>(parse_integer(arg, value(), 0, 10000));
     else if(arg == "--threads") a.threads = static_cast<std::size_t>(parse_integer(arg, value(), 1, 4096));
     else if(!arg.empty() && arg[0] == '-') fail(2, "unknown option '" + arg + "'");
@@ -198,6 +208,8 @@ Arguments parse(int argc, char** argv)
     fail(2, "unknown metric '" + a.metric + "' (biharmonic, euclidean, rvd or geodesic)");
   if(a.dimension_given && a.metric != "biharmonic") fail(2, "--dimension applies to the biharmonic metric only");
   if(a.valid_dual && a.dual.empty()) fail(2, "--valid-dual applies to --dual only");
+  if(a.curvature_density > 0 && a.random < 0 && a.blue_noise < 0 && a.lloyd == 0)
+    fail(2, "--curvature-density applies to --random, --blue-noise and --lloyd only");
   return a;
 }
 
@@ -543,6 +555,13 @@ int run_main(int argc, char** argv)
       if(sharp[e] && !mesh.is_border(e)) breakline[e] = true;
     mesh.remove_property_map(sharp);
   }
+  // --curvature-density: sites drawn and relaxed more densely where the surface bends
+  std::optional<Mesh::Property_map<Mesh::Vertex_index, double> > density;
+  if(args.curvature_density > 0)
+  {
+    density = mesh.add_property_map<Mesh::Vertex_index, double>("v:svd_density", 1.).first;
+    SV::curvature_density(mesh, *density, SV::parameters::max_density_ratio(args.curvature_density));
+  }
 
   // sites as surface locations, remembering the sites file's lines for error messages
   std::vector<std::size_t> lines;
@@ -604,9 +623,13 @@ int run_main(int argc, char** argv)
       fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count) + ": more than "
               + std::to_string(per_face_limit) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
               + per_face_advice);
-    const std::vector<Location> drawn = args.random >= 0
-      ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), CGAL::parameters::random_seed(args.seed))
-      : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), CGAL::parameters::random_seed(args.seed));
+    auto draw = [&](const auto& np) {
+      return args.random >= 0 ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), np)
+                              : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), np);
+    };
+    const std::vector<Location> drawn = density
+      ? draw(SV::parameters::vertex_density_map(*density, CGAL::parameters::random_seed(args.seed)))
+      : draw(CGAL::parameters::random_seed(args.seed));
     for(const Location& l : drawn)
     {
       Point q;
@@ -683,8 +706,10 @@ int run_main(int argc, char** argv)
     try
     {
       auto relax = [&](auto& metric) {
-        return with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd),
-                                       [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); });
+        auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
+        return density
+          ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, CGAL::parameters::number_of_iterations(args.lloyd)), run)
+          : with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd), run);
       };
       const SV::Lloyd_result<Mesh> r = with_input_metric(args, mesh, dimension_for(mesh), relax);
       lloyd_energies = r.energies;
@@ -695,6 +720,7 @@ int run_main(int argc, char** argv)
     catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
     catch(const SV::Numerical_error& e) { fail(3, e.what()); }
   }
+  if(density) mesh.remove_property_map(*density);
 
   // --valid-dual: sites appended (the given ones keep their places and indices) until the
   // dual is a valid mesh, on the input mesh like Lloyd; the final diagram is checked again

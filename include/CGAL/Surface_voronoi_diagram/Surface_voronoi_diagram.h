@@ -508,6 +508,8 @@ private:
     settings.has_weights = has_weights;
     settings.parallel = SVi::use_threads<ConcurrencyTag>();
     settings.cells_only = choose_parameter(get_parameter(np, SVnp::cells_only), false);
+    m_data.centroid_density = choose_parameter(get_parameter(np, SVnp::centroid_density), std::shared_ptr<const std::vector<double> >());
+    CGAL_precondition(!m_data.centroid_density || m_data.centroid_density->size() == m_data.mesh->number_of_vertices());
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }

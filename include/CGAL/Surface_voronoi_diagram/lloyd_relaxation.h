@@ -87,6 +87,35 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
   }
 }
 
+// The weight of the centroids, by internal vertex index: the square of the density of sites
+// per unit area, since a centroidal Voronoi tessellation of the plane with weight w has
+// about sqrt(w) sites per unit area (Gersho); null without a density map.
+template <class TriangleMesh, class NamedParameters>
+std::shared_ptr<const std::vector<double> > centroid_density(const Indexed_mesh<TriangleMesh>& mesh, const NamedParameters& np)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value)
+  {
+    CGAL_USE(mesh);
+    CGAL_USE(np);
+    return nullptr;
+  }
+  else
+  {
+    const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
+    auto w = std::make_shared<std::vector<double> >(mesh.number_of_vertices());
+    bool positive = false;
+    for(std::size_t v = 0; v < w->size(); ++v)
+    {
+      const double x = double(get(density, mesh.vertex_handles[v]));
+      if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
+      (*w)[v] = x * x;
+      positive = positive || x > 0;
+    }
+    if(!positive) throw Input_error("the vertex density must not be zero everywhere");
+    return w;
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
@@ -127,6 +156,15 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 ///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{the kernel of the point type of the vertex point map}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::vertex_density_map}
+///     \cgalParamDescription{the wanted number of sites per unit area, up to a constant factor,
+///       at each vertex (interpolated linearly across faces; see `curvature_density()`): the
+///       centroids are weighted by its square, which gives a centroidal tessellation about
+///       that many sites per unit area. The energies reported stay those without the density.}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and a
+///       value type convertible to `double` (finite, not negative, not zero everywhere)}
+///     \cgalParamDefault{a uniform density}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the number of Lloyd steps}
 ///     \cgalParamType{`std::size_t`}
@@ -142,6 +180,8 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 /// \cgalNamedParamsEnd
 ///
 /// \returns the relaxed sites, the energy after each iteration and what was kept in place
+/// \throws Surface_voronoi::Input_error if a density is negative or not a finite number, or
+///         zero at every vertex (checked in every build), and as the diagram's constructor
 /// \pre the preconditions of the diagram's constructor hold for `sites`
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Metric, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Lloyd_result<TriangleMesh>
@@ -170,6 +210,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   // indexed once for all the diagrams (and the checks for coincident sites)
   const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
+  const std::shared_ptr<const std::vector<double> > density = internal::centroid_density(mesh, np);
 
   Lloyd_result<TriangleMesh> result;
   std::vector<Location> previous = sites;
@@ -177,7 +218,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   {
     result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
     const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
-    const auto cells_np = Surface_voronoi::parameters::shared_indexed_mesh(shared_mesh, Surface_voronoi::parameters::cells_only(true, np));
+    const auto cells_np = Surface_voronoi::parameters::shared_indexed_mesh(shared_mesh, Surface_voronoi::parameters::cells_only(true,
+                          Surface_voronoi::parameters::centroid_density(density, np)));
     const Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
     if(diagram.is_cancelled())
     {

@@ -71,6 +71,9 @@ enum cells_only_t { cells_only };
 enum shared_indexed_mesh_t { shared_indexed_mesh };
 enum first_moving_site_t { first_moving_site };
 enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
+enum vertex_density_map_t { vertex_density_map };
+enum max_density_ratio_t { max_density_ratio };
+enum centroid_density_t { centroid_density };
 } // namespace internal_np
 
 namespace parameters {
@@ -209,6 +212,25 @@ unspecified_type maximum_number_of_added_sites(const T& value);
 template <class T, class NamedParameters>
 unspecified_type maximum_number_of_added_sites(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `vertex_density_map`: the wanted number of
+/// sites per unit area, up to a constant factor, at each vertex of the mesh, as a readable
+/// property map whose key is the vertex descriptor and whose value converts to `double`
+/// (finite, not negative, not zero on every face; interpolated linearly across faces); read
+/// by `random_sites()`, `blue_noise_sites()` and `lloyd_relaxation()`.
+template <class T>
+unspecified_type vertex_density_map(const T& value);
+/// The chain `chain` with `vertex_density_map(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type vertex_density_map(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `max_density_ratio`: the largest density
+/// `curvature_density()` writes, the smallest being 1 (`double`, at least 1).
+template <class T>
+unspecified_type max_density_ratio(const T& value);
+/// The chain `chain` with `max_density_ratio(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type max_density_ratio(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
@@ -233,6 +255,11 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
 // (a std::shared_ptr to the internal Indexed_mesh, built from the same vertex point map).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
+// An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
+// density (a std::shared_ptr to a std::vector<double> by internal vertex index).
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
 // An internal hook, not API: lloyd_relaxation() keeps the sites before this index in place
 // (add_sites_for_valid_dual() relaxes only the sites it added).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)

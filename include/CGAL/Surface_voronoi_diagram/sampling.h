@@ -18,6 +18,8 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 
 #include <CGAL/assertions.h>
@@ -32,8 +34,11 @@
 #include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -93,6 +98,55 @@ double scaled_cumulative_areas(const TriangleMesh& tm, const VertexPointMap& vpm
   return double(cumulative.size());
 }
 
+// The density of `np`'s vertex_density_map at the corners of each face of `fs`, in the order
+// of a face location's barycentric coordinates; empty without a density map.
+template <class TriangleMesh, class Face, class NamedParameters>
+std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh& tm, const std::vector<Face>& fs,
+                                                          const NamedParameters& np, std::true_type)
+{
+  const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
+  std::vector<std::array<double, 3> > out;
+  out.reserve(fs.size());
+  for(auto f : fs)
+  {
+    const auto h = halfedge(f, tm);
+    const std::array<double, 3> d = {{ double(get(density, source(h, tm))), double(get(density, target(h, tm))),
+                                       double(get(density, target(next(h, tm), tm))) }};
+    // checked in every build: a density that is not a number or negative would make the
+    // drawing by rejection loop forever
+    for(double x : d)
+      if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
+    out.push_back(d);
+  }
+  return out;
+}
+template <class TriangleMesh, class Face, class NamedParameters>
+std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh&, const std::vector<Face>&,
+                                                          const NamedParameters&, std::false_type)
+{
+  return std::vector<std::array<double, 3> >();
+}
+
+// The corner densities of each location's face (the density map must be given).
+template <class TriangleMesh, class Location, class NamedParameters>
+std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh& tm, const std::vector<Location>& locations,
+                                                              const NamedParameters& np)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs;
+  fs.reserve(locations.size());
+  for(const Location& l : locations) fs.push_back(l.first);
+  return face_corner_densities(tm, fs, np, std::true_type());
+}
+
+template <class NamedParameters>
+using Has_density = std::integral_constant<bool,
+    !CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value>;
+
+inline double density_at(const std::array<double, 3>& d, const std::array<double, 3>& b)
+{
+  return b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
@@ -114,6 +168,15 @@ double scaled_cumulative_areas(const TriangleMesh& tm, const VertexPointMap& vpm
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::vertex_density_map}
+///     \cgalParamDescription{the wanted number of sites per unit area, up to a constant factor,
+///       at each vertex, interpolated linearly across faces: a face is drawn with probability
+///       proportional to its area times its mean density, and a point in it by rejection
+///       against the interpolated density}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key and a
+///       value type convertible to `double` (finite, not negative, not zero on every face)}
+///     \cgalParamDefault{a uniform density}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// Runs in time linear in the size of `tm` and `n` for any finite coordinates (outside the
@@ -121,6 +184,8 @@ double scaled_cumulative_areas(const TriangleMesh& tm, const VertexPointMap& vpm
 /// scaled by a power of two; a mesh without any measurable area is sampled face by face).
 ///
 /// \pre `tm` has at least one face
+/// \throws Surface_voronoi::Input_error if a density is negative or not a finite number, or
+///         is zero on every face (checked in every build)
 template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
 random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
@@ -148,14 +213,41 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
   // without any measurable area is sampled by face index.
   if(!(total > 0) || !std::isfinite(total))
     total = internal::scaled_cumulative_areas(tm, vpm, fs, cumulative);
+  // with a density: faces drawn by area times mean density, points in them by rejection
+  const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+  if(!density.empty())
+  {
+    double previous = 0, weighted = 0;
+    for(std::size_t k = 0; k < fs.size(); ++k)
+    {
+      const double area = cumulative[k] - previous;
+      previous = cumulative[k];
+      weighted += area * (density[k][0] + density[k][1] + density[k][2]) / 3;
+      cumulative[k] = weighted;
+    }
+    if(!(weighted > 0 && std::isfinite(weighted))) throw Input_error("the vertex density must not be zero on every face");
+    total = weighted;
+  }
   std::vector<Location> out;
   out.reserve(n);
   for(std::size_t i = 0; i < n; ++i)
   {
     std::size_t k = std::upper_bound(cumulative.begin(), cumulative.end(), rng.get_double(0, total)) - cumulative.begin();
     k = (std::min)(k, fs.size() - 1);
-    const double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
-    out.push_back(Location(fs[k], {{ 1 - r1, r1 * (1 - r2), r1 * r2 }}));
+    for(;;)
+    {
+      const double r1 = std::sqrt(rng.get_double()), r2 = rng.get_double();
+      const std::array<double, 3> b = {{ 1 - r1, r1 * (1 - r2), r1 * r2 }};
+      // a face drawn has a positive density at some corner, so this ends (after at most
+      // max/mean draws on average)
+      if(!density.empty())
+      {
+        const double top = (std::max)((std::max)(density[k][0], density[k][1]), density[k][2]);
+        if(!(rng.get_double(0, top) < internal::density_at(density[k], b))) continue;
+      }
+      out.push_back(Location(fs[k], b));
+      break;
+    }
   }
   return out;
 }
@@ -195,9 +287,20 @@ random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::vertex_density_map}
+///     \cgalParamDescription{the wanted number of sites per unit area, up to a constant factor,
+///       at each vertex: the candidates are drawn with it (as by `random_sites()`), the packing
+///       radius is computed on its integral instead of the area, and a candidate where the
+///       density is \f$ \rho \f$ has the radius \f$ r_{max} / \sqrt{\rho} \f$; two candidates
+///       crowd each other within the sum of their radii}
+///     \cgalParamType{a model of `ReadablePropertyMap` with the vertex descriptor as key and a
+///       value type convertible to `double` (finite, not negative, not zero on every face)}
+///     \cgalParamDefault{a uniform density}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` has at least one face, or `n == 0`
+/// \throws Surface_voronoi::Input_error as `random_sites()`
 template <class TriangleMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
 blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
@@ -235,6 +338,28 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   for(const Location& l : candidates)
     points.push_back(internal::scaled_point(
         CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(K())), -e));
+  // with a density, each candidate's radius shrinks as the square root of its density, so
+  // that a disk holds as many sites wherever it is; the packing is then of the mass (the
+  // integral of the density) instead of the area
+  std::vector<double> radius_scale;
+  if constexpr(internal::Has_density<CGAL_NP_CLASS>::value)
+  {
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
+    const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+    double mass = 0;
+    for(std::size_t k = 0; k < fs.size(); ++k)
+    {
+      const auto h = halfedge(fs[k], tm);
+      const double a = (e == 0) ? internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)))
+                                : internal::scaled_face_area(tm, vpm, fs[k], -e);
+      if(a > 0 && std::isfinite(a)) mass += a * (density[k][0] + density[k][1] + density[k][2]) / 3;
+    }
+    const std::vector<std::array<double, 3> > at_candidates = internal::location_corner_densities(tm, candidates, np);
+    radius_scale.resize(m);
+    for(std::size_t i = 0; i < m; ++i)
+      radius_scale[i] = 1 / std::sqrt(internal::density_at(at_candidates[i], candidates[i].second));
+    area = mass;
+  }
   // the largest radius of n disks packed on the area (hexagonal packing), as in Yuksel 2015
   const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n)));
   const double reach = 2 * r_max;
@@ -250,6 +375,32 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   std::vector<std::vector<std::pair<std::size_t, double> > > neighbours(m);
   std::vector<double> weight(m, 0.);
   std::vector<std::size_t> found;
+  if(!radius_scale.empty())
+  {
+    // two candidates crowd each other within the sum of their radii: each searches twice its
+    // own radius, so the one with the larger radius finds the pair
+    std::vector<std::pair<std::size_t, std::size_t> > pairs;
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      found.clear();
+      tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach * radius_scale[i], 0., Traits(ppm)));
+      for(std::size_t j : found)
+        if(j != i && std::sqrt(CGAL::squared_distance(points[i], points[j])) < r_max * (radius_scale[i] + radius_scale[j]))
+          pairs.emplace_back((std::min)(i, j), (std::max)(i, j));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for(const auto& p : pairs)
+    {
+      const double d = std::sqrt(CGAL::squared_distance(points[p.first], points[p.second]));
+      const double w = std::pow(1 - d / (r_max * (radius_scale[p.first] + radius_scale[p.second])), 8);
+      neighbours[p.first].emplace_back(p.second, w);
+      neighbours[p.second].emplace_back(p.first, w);
+    }
+    for(std::size_t i = 0; i < m; ++i)
+      for(const auto& nw : neighbours[i]) weight[i] += nw.second;
+  }
+  else
   for(std::size_t i = 0; i < m; ++i)
   {
     found.clear();

@@ -39,25 +39,43 @@ void for_each_fan_triangle(const Partition& partition, const Partition::Piece& p
   }
 }
 
-/// the area-weighted centroid of every cell, in space; the site's own point for an empty cell;
-/// from the partition, or from the cuts' measures where the diagram has no partition
+/// the area-weighted centroid of every cell, in space (weighted by Lloyd's density as well,
+/// if it has one); the site's own point for an empty cell; from the partition, or from the
+/// cuts' measures where the diagram has no partition
 template <class TriangleMesh>
 std::vector<Point_d> cell_centroids(const Diagram_data<TriangleMesh>& d)
 {
   const std::size_t n = d.sites.size();
   std::vector<double> a(n, 0.), c(3 * n, 0.);
+  const std::vector<double>* density = d.centroid_density.get();
   if(d.measures.valid)
     for(std::size_t i = 0; i < n; ++i)
     {
-      a[i] = d.measures.area[i];
+      a[i] = density ? d.measures.mass[i] : d.measures.area[i];
       for(int j = 0; j < 3; ++j) c[3 * i + j] = d.measures.moment[i][j];
     }
+  const Indexed_mesh<TriangleMesh>& mesh = *d.mesh;
   for(const Partition::Piece& p : d.partition.pieces)
   {
     if(p.site == no_site) continue;
+    auto density_at = [&](const Point_d& x) {
+      const Barycentric b = mesh.barycentric_coordinates(p.face, x);
+      double w = 0;
+      for(int k = 0; k < 3; ++k) w += b[k] * (*density)[mesh.triangles[p.face][k]];
+      return w;
+    };
     for_each_fan_triangle(d.partition, p, [&](const Point_d& o, const Point_d& q, const Point_d& r, double t) {
-      a[p.site] += t;
-      for(int j = 0; j < 3; ++j) c[3 * p.site + j] += t * (o[j] + q[j] + r[j]) / 3.;
+      if(!density)
+      {
+        a[p.site] += t;
+        for(int j = 0; j < 3; ++j) c[3 * p.site + j] += t * (o[j] + q[j] + r[j]) / 3.;
+        return;
+      }
+      // as on the cuts (Cut_cell_measures.h): the edge-midpoint rule
+      const double wo = density_at(o), wq = density_at(q), wr = density_at(r);
+      a[p.site] += t * (wo + wq + wr) / 3.;
+      for(int j = 0; j < 3; ++j)
+        c[3 * p.site + j] += t / 3. * ((wo + wq) * (o[j] + q[j]) + (wq + wr) * (q[j] + r[j]) + (wr + wo) * (r[j] + o[j])) / 4.;
     });
   }
   std::vector<Point_d> out;

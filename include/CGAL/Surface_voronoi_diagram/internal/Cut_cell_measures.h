@@ -40,7 +40,8 @@ struct Cell_measures
 {
   bool valid = false;
   std::vector<double> area;
-  std::vector<std::array<double, 3> > moment;
+  std::vector<std::array<double, 3> > moment;   // with a density, density-weighted
+  std::vector<double> mass;                      // with a density: its integral over the cell
   double energy = 0;
   double unreached_area = 0;
 };
@@ -52,8 +53,9 @@ public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
   Cut_cell_measurer(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts,
-                    const std::vector<Site>& sites, const Embedding_values* embedding)
-    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_sites(sites), m_embedding(embedding)
+                    const std::vector<Site>& sites, const Embedding_values* embedding,
+                    const std::vector<double>* density = nullptr)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_sites(sites), m_embedding(embedding), m_density(density)
   {}
 
   /// faces in order, pieces in order: the sums do not depend on threads
@@ -63,6 +65,7 @@ public:
     out.valid = true;
     out.area.assign(m_sites.size(), 0.);
     out.moment.assign(m_sites.size(), {{ 0., 0., 0. }});
+    if(m_density) out.mass.assign(m_sites.size(), 0.);
     Polygon polygon;
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
     {
@@ -191,7 +194,17 @@ private:
       const Polygon_vertex& r = polygon[k + 1];
       const double t = triangle_area(o.point, q.point, r.point);
       area += t;
-      for(int j = 0; j < 3; ++j) moment[j] += t * (o.point[j] + q.point[j] + r.point[j]) / 3.;
+      if(m_density)
+      {
+        // density times position is quadratic on the triangle: the edge-midpoint rule is exact
+        const double wo = density_at(f, o.b), wq = density_at(f, q.b), wr = density_at(f, r.b);
+        out.mass[x.site] += t * (wo + wq + wr) / 3.;
+        for(int j = 0; j < 3; ++j)
+          moment[j] += t / 3. * ((wo + wq) * (o.point[j] + q.point[j]) + (wq + wr) * (q.point[j] + r.point[j])
+                                 + (wr + wo) * (r.point[j] + o.point[j])) / 4.;
+      }
+      else
+        for(int j = 0; j < 3; ++j) moment[j] += t * (o.point[j] + q.point[j] + r.point[j]) / 3.;
       if(!(t > 0)) continue;
       // the edge-midpoint rule, exact for the quadratic squared distance of an embedding
       if(field.quadratic)
@@ -201,11 +214,18 @@ private:
     }
   }
 
+  double density_at(std::size_t f, const Barycentric& b) const
+  {
+    const std::vector<double>& w = *m_density;
+    return b[0] * w[m_mesh.triangles[f][0]] + b[1] * w[m_mesh.triangles[f][1]] + b[2] * w[m_mesh.triangles[f][2]];
+  }
+
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
   const std::vector<Face_cut>& m_cuts;
   const std::vector<Site>& m_sites;
   const Embedding_values* m_embedding;
+  const std::vector<double>* m_density;   // by vertex, or null
 };
 
 } // namespace internal

@@ -151,7 +151,8 @@ public:
     {
       // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of
       // the cells are taken on them, without a partition
-      d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, propagation.candidates, m_cuts, d.sites, embedding_of(m_fields)).run();
+      d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, propagation.candidates, m_cuts, d.sites, embedding_of(m_fields),
+                                                   d.centroid_density.get()).run();
       d.statistics.broken_cells = 0;
       d.candidates = std::move(propagation.candidates);
       summarize(regions_of_site);

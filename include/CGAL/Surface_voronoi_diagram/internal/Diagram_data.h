@@ -44,6 +44,7 @@ struct Diagram_data
   Candidate_lists candidates;                    // after propagation and repair
   Partition partition;                           // empty when the cells were measured on the cuts
   Cell_measures measures;                        // Lloyd's diagrams: the cells measured on the cuts
+  std::shared_ptr<const std::vector<double> > centroid_density;   // Lloyd's: by vertex, or null
   std::vector<double> cell_area;
   std::vector<std::size_t> cell_pieces;
   std::vector<std::size_t> vertex_site;          // owner of each mesh vertex
