@@ -106,11 +106,11 @@ TEST_CASE("sampling: areas that overflow or underflow (coordinates near 1e308, 1
 namespace {
 // a unit square, sparse (density 1) left of x = 0.5 and dense (9) right of x = 0.6, with the
 // column between interpolating: 4.1 of its 4.6 units of mass lie right of x = 0.5
-std::vector<double> two_density_square(Mesh& m)
+Mesh::Property_map<Mesh::Vertex_index, double> two_density_square(Mesh& m)
 {
   GEN::make_planar_grid(m, 11, 11, 1.0, 1.0);
-  std::vector<double> density(num_vertices(m));
-  for(auto v : vertices(m)) density[v.idx()] = (m.point(v).x() > 0.55) ? 9. : 1.;
+  auto density = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
+  for(auto v : vertices(m)) density[v] = (m.point(v).x() > 0.55) ? 9. : 1.;
   return density;
 }
 
@@ -126,9 +126,7 @@ double fraction_right_of_half(const Mesh& m, const Locations& ls)
 TEST_CASE("sampling: random sites follow a vertex density map", "[sampling][density]")
 {
   Mesh m;
-  const std::vector<double> density = two_density_square(m);
-  auto density_map = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
-  for(auto v : vertices(m)) density_map[v] = density[v.idx()];
+  const auto density_map = two_density_square(m);
   const auto sites = SV::random_sites(m, 20000, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(3)));
   REQUIRE(sites.size() == 20000);
   // 4.1 / 4.6 of the mass; the standard deviation of the fraction is 0.0022
@@ -145,9 +143,7 @@ TEST_CASE("sampling: random sites follow a vertex density map", "[sampling][dens
 TEST_CASE("sampling: blue noise follows a vertex density map and spaces sites by it", "[sampling][density]")
 {
   Mesh m;
-  const std::vector<double> density = two_density_square(m);
-  auto density_map = m.add_property_map<Mesh::Vertex_index, double>("v:test_density", 0.).first;
-  for(auto v : vertices(m)) density_map[v] = density[v.idx()];
+  const auto density_map = two_density_square(m);
   const auto sites = SV::blue_noise_sites(m, 600, SV::parameters::vertex_density_map(density_map, CGAL::parameters::random_seed(4)));
   REQUIRE(sites.size() == 600);
   CHECK(std::abs(fraction_right_of_half(m, sites) - 4.1 / 4.6) < 0.04);

@@ -268,6 +268,15 @@ private:
       const Event e = m_queue.top();
       m_queue.pop();
       ++statistics.events;
+      // the queue jumps across the mesh, so the next event's face is rarely in cache: ask for
+      // it now, while this event is processed
+      if(!m_queue.empty())
+      {
+        const Event& next = m_queue.top();
+        prefetch(&candidates[next.face]);
+        prefetch(&m_links[next.face]);
+        prefetch(&m_values[next.slot]);
+      }
       const Candidate x(e.site, m_values[e.slot], e.from_edge);
       m_free_slots.push_back(e.slot);
       Candidate_list& list = candidates[e.face];
@@ -288,8 +297,24 @@ private:
       ++statistics.admitted;
       const Face_link& l = m_links[e.face];
       for(int k = 0; k < 3; ++k)
+        if(l.neighbor[k] != no_link)
+        {
+          prefetch(&m_offers[l.neighbor[k]]);
+          prefetch(&candidates[l.neighbor[k]]);
+        }
+      for(int k = 0; k < 3; ++k)
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(x, e.face, k);
     }
+  }
+
+  // a hint to the processor, which changes nothing else
+  static void prefetch(const void* p)
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    CGAL_USE(p);
+#endif
   }
 
   const Mesh& m_mesh;
