@@ -317,11 +317,15 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   const std::size_t m = candidates.size();
   std::vector<P> points;
   points.reserve(m);
+  // the faces' areas, kept for the density's integral below
+  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
+  std::vector<double> face_area(fs.size());
   double area = 0;
-  for(auto f : faces(tm))
+  for(std::size_t k = 0; k < fs.size(); ++k)
   {
-    const auto h = halfedge(f, tm);
-    area += internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
+    const auto h = halfedge(fs[k], tm);
+    face_area[k] = internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
+    area += face_area[k];
   }
   // outside the documented coordinate range, on the points scaled by a power of two
   int e = 0;
@@ -329,10 +333,11 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   {
     e = internal::coordinate_exponent(tm, vpm);
     area = 0;
-    for(auto f : faces(tm))
+    for(std::size_t k = 0; k < fs.size(); ++k)
     {
-      const double a = internal::scaled_face_area(tm, vpm, f, -e);
-      if(a > 0 && std::isfinite(a)) area += a;
+      const double a = internal::scaled_face_area(tm, vpm, fs[k], -e);
+      face_area[k] = (a > 0 && std::isfinite(a)) ? a : 0.;
+      area += face_area[k];
     }
   }
   for(const Location& l : candidates)
@@ -344,16 +349,10 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   std::vector<double> radius_scale;
   if constexpr(internal::Has_density<CGAL_NP_CLASS>::value)
   {
-    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
     const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
     double mass = 0;
     for(std::size_t k = 0; k < fs.size(); ++k)
-    {
-      const auto h = halfedge(fs[k], tm);
-      const double a = (e == 0) ? internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)))
-                                : internal::scaled_face_area(tm, vpm, fs[k], -e);
-      if(a > 0 && std::isfinite(a)) mass += a * (density[k][0] + density[k][1] + density[k][2]) / 3;
-    }
+      mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;
     const std::vector<std::array<double, 3> > at_candidates = internal::location_corner_densities(tm, candidates, np);
     radius_scale.resize(m);
     for(std::size_t i = 0; i < m; ++i)

@@ -71,11 +71,7 @@ std::vector<Point_d> cell_centroids(const Diagram_data<TriangleMesh>& d)
         for(int j = 0; j < 3; ++j) c[3 * p.site + j] += t * (o[j] + q[j] + r[j]) / 3.;
         return;
       }
-      // as on the cuts (Cut_cell_measures.h): the edge-midpoint rule
-      const double wo = density_at(o), wq = density_at(q), wr = density_at(r);
-      a[p.site] += t * (wo + wq + wr) / 3.;
-      for(int j = 0; j < 3; ++j)
-        c[3 * p.site + j] += t / 3. * ((wo + wq) * (o[j] + q[j]) + (wq + wr) * (q[j] + r[j]) + (wr + wo) * (r[j] + o[j])) / 4.;
+      add_weighted_triangle(o, q, r, t, density_at(o), density_at(q), density_at(r), a[p.site], &c[3 * p.site]);
     });
   }
   std::vector<Point_d> out;

@@ -46,6 +46,17 @@ struct Cell_measures
   double unreached_area = 0;
 };
 
+/// Adds to `mass` and `moment` a triangle's integrals of a density w and of w x, w linear and
+/// given at the corners o, q, r; t is the triangle's area. w x is quadratic on the triangle,
+/// which the edge-midpoint rule integrates exactly.
+inline void add_weighted_triangle(const Point_d& o, const Point_d& q, const Point_d& r, double t,
+                                  double wo, double wq, double wr, double& mass, double* moment)
+{
+  mass += t * (wo + wq + wr) / 3.;
+  for(int j = 0; j < 3; ++j)
+    moment[j] += t / 3. * ((wo + wq) * (o[j] + q[j]) + (wq + wr) * (q[j] + r[j]) + (wr + wo) * (r[j] + o[j])) / 4.;
+}
+
 template <class TriangleMesh>
 class Cut_cell_measurer
 {
@@ -76,7 +87,7 @@ public:
         continue;
       }
       const Face_cut& cut = m_cuts[f];
-      if(cut.whole_face || list.size() == 1)
+      if(cut.whole_face)
       {
         const std::array<Polygon_vertex, 3> triangle = {{
             Polygon_vertex{ m_mesh.corner(f, 0), {{ 1., 0., 0. }} },
@@ -195,14 +206,8 @@ private:
       const double t = triangle_area(o.point, q.point, r.point);
       area += t;
       if(m_density)
-      {
-        // density times position is quadratic on the triangle: the edge-midpoint rule is exact
-        const double wo = density_at(f, o.b), wq = density_at(f, q.b), wr = density_at(f, r.b);
-        out.mass[x.site] += t * (wo + wq + wr) / 3.;
-        for(int j = 0; j < 3; ++j)
-          moment[j] += t / 3. * ((wo + wq) * (o.point[j] + q.point[j]) + (wq + wr) * (q.point[j] + r.point[j])
-                                 + (wr + wo) * (r.point[j] + o.point[j])) / 4.;
-      }
+        add_weighted_triangle(o.point, q.point, r.point, t, density_at(f, o.b), density_at(f, q.b), density_at(f, r.b),
+                              out.mass[x.site], moment.data());
       else
         for(int j = 0; j < 3; ++j) moment[j] += t * (o.point[j] + q.point[j] + r.point[j]) / 3.;
       if(!(t > 0)) continue;

@@ -53,10 +53,10 @@ public:
 
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
               const Blocked& blocked)
-    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked),
+    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces),
       m_epoch(mesh.number_of_faces(), 0), m_offers(mesh.number_of_faces())
   {
-    link_faces();
+    link_faces(blocked);
   }
 
   Candidate_lists candidates;
@@ -101,8 +101,8 @@ public:
       for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
       for(int k = 0; k < 3; ++k)
       {
-        const std::size_t g = m_mesh.neighbors[f][k];
-        if(g == Mesh::none || m_blocked(f, k)) continue;
+        const std::uint32_t g = m_links[f].neighbor[k];
+        if(g == no_link) continue;
         for(const Candidate& x : candidates[g])
           if(!banned(x.site, f)) offer(x.site, f, static_cast<std::uint8_t>(k));
       }
@@ -186,7 +186,7 @@ private:
   };
   static constexpr std::uint32_t no_link = std::uint32_t(-1);
 
-  void link_faces()
+  void link_faces(const Blocked& blocked)
   {
     const std::size_t nf = m_mesh.number_of_faces();
     m_links.resize(nf);
@@ -198,7 +198,7 @@ private:
         l.neighbor[k] = no_link;
         l.fresh_vertex[k] = 0;
         l.shared_corners[k] = 0;
-        if(g == Mesh::none || m_blocked(f, k)) continue;
+        if(g == Mesh::none || blocked(f, k)) continue;
         const int a = m_mesh.corner_of(g, m_mesh.triangles[f][k]), b = m_mesh.corner_of(g, m_mesh.triangles[f][(k + 1) % 3]);
         CGAL_assertion(a >= 0 && a < 3 && b >= 0 && b < 3 && a != b);
         l.neighbor[k] = static_cast<std::uint32_t>(g);
@@ -320,8 +320,7 @@ private:
   const Mesh& m_mesh;
   const Fields& m_fields;
   const std::vector<std::size_t>& m_site_faces;
-  Blocked m_blocked;
-  std::vector<Face_link> m_links;
+  std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;
   std::vector<std::array<double, 3> > m_values;
