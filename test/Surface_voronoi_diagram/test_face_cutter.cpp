@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 
 #include <algorithm>
 #include <array>
@@ -351,4 +352,68 @@ TEST_CASE("Face_cutter: random small integer sites, with the exact ties they bri
     fc_check(c, cut, unsigned(n));
   }
   CHECK(degenerate > 20);   // the lattice sites must bring exact ties
+}
+
+// The flat store of all the faces' cuts (Face_cuts.h) must give back each face's cut as the
+// cutter made it: the same pieces, vertices and supports, one whole face without a piece
+// for a single candidate, nothing for none; after some faces are cut again on new lists
+// (as repair does), those show the new cuts and the others are unchanged; and cutting in
+// parallel chunks stores the same cuts as cutting in order.
+TEST_CASE("face cuts: the flat store gives back every face's cut, also after faces are cut again", "[cutting]")
+{
+  std::mt19937 rng(77);
+  auto random_list = [&]() {
+    std::vector<std::array<double, 2> > sites;
+    const int count = int(rng() % 6);   // 0 to 5 candidates
+    for(int i = 0; i < count; ++i) sites.push_back({{ double(int(rng() % 13) - 3), double(int(rng() % 13) - 3) }});
+    return fc_fields(sites);
+  };
+  const std::size_t nf = 20000;   // more than two chunks
+  SVI::Candidate_lists lists(nf);
+  for(auto& l : lists) l = random_list();
+  auto same = [](const SVI::Face_cuts::Cut& got, const SVI::Candidate_list& list) {
+    if(list.empty()) return got.pieces.empty() && !got.whole_face && !got.degenerate;
+    if(list.size() == 1) return got.pieces.empty() && got.whole_face;
+    const SVI::Face_cut want = SVI::Face_cutter(list).cut();
+    if(got.whole_face || got.degenerate != want.degenerate || got.pieces.size() != want.pieces.size()) return false;
+    for(std::size_t p = 0; p < want.pieces.size(); ++p)
+    {
+      const SVI::Face_cuts::Piece g = got.pieces[p];
+      const SVI::Symbolic_piece& w = want.pieces[p];
+      if(g.candidate != w.candidate || g.vertices.size() != w.vertices.size() || g.supports.size() != w.supports.size()) return false;
+      for(std::size_t k = 0; k < w.vertices.size(); ++k)
+      {
+        const SVI::Symbolic_vertex &a = g.vertices[k], &b = w.vertices[k];
+        const SVI::Piece_edge_support &c = g.supports[k], &d = w.supports[k];
+        if(a.kind != b.kind || a.local != b.local || (a.kind != SVI::Symbolic_vertex::CORNER && a.other != b.other)
+           || (a.kind == SVI::Symbolic_vertex::TRIPLE && a.third != b.third))
+          return false;
+        if(c.on_mesh_edge != d.on_mesh_edge || (c.on_mesh_edge ? c.local != d.local : c.other != d.other)) return false;
+      }
+    }
+    return true;
+  };
+  auto all_same = [&](const SVI::Face_cuts& cuts) {
+    std::size_t wrong = 0;
+    for(std::size_t f = 0; f < nf; ++f) wrong += !same(cuts[f], lists[f]);
+    return wrong;
+  };
+  SVI::Face_cuts in_order, in_chunks;
+  in_order.reset(nf);
+  in_chunks.reset(nf);
+  in_order.cut(lists, nf, [](std::size_t k) { return k; }, false);
+  in_chunks.cut(lists, nf, [](std::size_t k) { return k; }, true);
+  CHECK(all_same(in_order) == 0);
+  CHECK(all_same(in_chunks) == 0);
+
+  std::vector<std::size_t> again;
+  for(std::size_t f = 0; f < nf; f += 1 + rng() % 5)
+  {
+    again.push_back(f);
+    lists[f] = random_list();
+  }
+  in_order.cut(lists, again.size(), [&again](std::size_t k) { return again[k]; }, false);
+  in_chunks.cut(lists, again.size(), [&again](std::size_t k) { return again[k]; }, true);
+  CHECK(all_same(in_order) == 0);
+  CHECK(all_same(in_chunks) == 0);
 }

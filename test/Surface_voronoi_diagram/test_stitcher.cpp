@@ -79,7 +79,7 @@ struct St_run
   St_indexed mesh;
   std::vector<std::vector<double> > field;   // field[site][vertex]
   SVI::Candidate_lists candidates;
-  std::vector<SVI::Face_cut> cuts;
+  SVI::Face_cuts cuts;
   SVI::Partition part;
 };
 
@@ -93,13 +93,14 @@ std::unique_ptr<St_run> st_run_fields(const St_mesh& m, const std::vector<std::v
   r.mesh.build(r.surface, get(CGAL::vertex_point, r.surface));
   r.field = field;
   r.candidates.assign(r.mesh.number_of_faces(), {});
+  r.cuts.reset(r.mesh.number_of_faces());
   for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
   {
     const auto& t = r.mesh.triangles[f];
     for(std::size_t s = 0; s < field.size(); ++s)
       r.candidates[f].push_back({ std::uint32_t(s), {{ field[s][t[0]], field[s][t[1]], field[s][t[2]] }} });
     if(f % 2) SVI::clean_candidate_list(r.candidates[f]);
-    r.cuts.push_back(SVI::Face_cutter(r.candidates[f]).cut());
+    r.cuts.set(f, SVI::Face_cutter(r.candidates[f]).cut());
   }
   SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
   return run;
@@ -446,9 +447,10 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
     // each face keeps each site with probability 1/3 (at least one), some faces none
     std::bernoulli_distribution keep(1. / 3), unreached(0.02);
     r.candidates.assign(r.mesh.number_of_faces(), {});
+    r.cuts.reset(r.mesh.number_of_faces());
     for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
     {
-      if(unreached(rng)) { r.cuts.push_back(SVI::Face_cut()); continue; }
+      if(unreached(rng)) continue;
       const auto& t = r.mesh.triangles[f];
       for(std::size_t s = 0; s < sites.size(); ++s)
         if(keep(rng) || (s + 1 == sites.size() && r.candidates[f].empty()))
@@ -456,11 +458,12 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
       SVI::clean_candidate_list(r.candidates[f]);
       if(r.candidates[f].size() == 1)
       {
-        r.cuts.push_back(SVI::Face_cut());
-        r.cuts.back().whole_face = true;
+        SVI::Face_cut whole;
+        whole.whole_face = true;
+        r.cuts.set(f, whole);
       }
       else
-        r.cuts.push_back(SVI::Face_cutter(r.candidates[f]).cut());
+        r.cuts.set(f, SVI::Face_cutter(r.candidates[f]).cut());
     }
     SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
     // each site located in a face holding a piece of it (the last such face)
@@ -536,13 +539,10 @@ void folded_grid_sites(double amplitude, std::size_t number_of_sites, std::mt199
   }
 }
 
-void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<std::size_t>& faces, std::vector<SVI::Face_cut>& cuts)
+// as the diagram cuts them: a face with one candidate whole, without a piece
+void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<std::size_t>& faces, SVI::Face_cuts& cuts)
 {
-  for(std::size_t f : faces)
-  {
-    cuts[f] = candidates[f].size() > 1 ? SVI::Face_cutter(candidates[f]).cut() : SVI::Face_cut();
-    cuts[f].whole_face = (candidates[f].size() == 1);
-  }
+  cuts.cut(candidates, faces.size(), [&faces](std::size_t k) { return faces[k]; }, false);
 }
 
 bool folded_grid_blocked_edge(std::size_t e) { return e % 37 == 0; }
@@ -568,7 +568,7 @@ struct Folded_grid_propagation
     propagation->run();
     std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
     std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
-    r.cuts.resize(all_faces.size());
+    r.cuts.reset(all_faces.size());
     cut_listed_faces(propagation->candidates, all_faces, r.cuts);
   }
   Folded_grid_propagation(const Folded_grid_propagation&) = delete;

@@ -31,6 +31,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,34 @@ Value site_value(std::size_t site)
 {
   return site == std::size_t(-1) ? static_cast<Value>(-1) : static_cast<Value>(site);
 }
+
+// Reserves the output's elements (CGAL's `reserve()` of the MutableFaceGraph models, which
+// `copy_face_graph()` calls too): growing by doubling held up to three times the output's
+// connectivity at once, the largest allocation of a diagram on a million-face mesh. The
+// edges are counted exactly: the pieces' sides, each shared by two pieces but on the border,
+// whose sides are the mesh's border edges split at the partition's vertices on them.
+template <class TriangleMesh, class PolygonMesh>
+void reserve_for_partition(const Partition& partition, const Indexed_mesh<TriangleMesh>& mesh, PolygonMesh& out)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  std::size_t sides = 0;
+  for(const Partition::Piece& piece : partition.pieces) sides += piece.vertices.size();
+  std::vector<std::uint8_t> on_border(mesh.number_of_edges(), 0);
+  std::size_t border_sides = 0;
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      if(mesh.neighbors[f][k] == Indexed_mesh<TriangleMesh>::none)
+      {
+        on_border[mesh.edges[f][k]] = 1;
+        ++border_sides;
+      }
+  for(const Partition::Vertex& v : partition.vertices)
+    if(v.kind == Partition::ON_EDGE && on_border[v.element]) ++border_sides;
+  reserve(out, static_cast<typename GT::vertices_size_type>(vertices(out).size() + partition.vertices.size()),
+          static_cast<typename GT::edges_size_type>(edges(out).size() + (sides + border_sides) / 2),
+          static_cast<typename GT::faces_size_type>(faces(out).size() + partition.pieces.size()));
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramOutputs
@@ -121,6 +150,7 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
   std::vector<std::size_t> site_of_face;
   std::vector<face_descriptor> created;
   created.reserve(partition.pieces.size());
+  reserve_for_partition(partition, *data.mesh, out);
   std::vector<vertex_descriptor> polygon;
   for(const auto& piece : partition.pieces)
   {

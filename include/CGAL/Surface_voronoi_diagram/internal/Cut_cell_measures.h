@@ -21,7 +21,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
@@ -63,7 +63,7 @@ class Cut_cell_measurer
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  Cut_cell_measurer(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts,
+  Cut_cell_measurer(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts,
                     const std::vector<Site>& sites, const Embedding_values* embedding,
                     const std::vector<double>* density = nullptr)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_sites(sites), m_embedding(embedding), m_density(density)
@@ -86,7 +86,7 @@ public:
         out.unreached_area += m_mesh.face_areas[f];
         continue;
       }
-      const Face_cut& cut = m_cuts[f];
+      const Face_cuts::Cut cut = m_cuts[f];
       if(cut.whole_face)
       {
         const std::array<Polygon_vertex, 3> triangle = {{
@@ -96,7 +96,7 @@ public:
         add(out, f, 0, triangle.data(), triangle.size());
         continue;
       }
-      for(const Symbolic_piece& piece : cut.pieces)
+      for(const Face_cuts::Piece piece : cut.pieces)
       {
         polygon.clear();
         for(const Symbolic_vertex& v : piece.vertices) polygon.push_back(place(f, piece.candidate, v));
@@ -227,7 +227,7 @@ private:
 
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
-  const std::vector<Face_cut>& m_cuts;
+  const Face_cuts& m_cuts;
   const std::vector<Site>& m_sites;
   const Embedding_values* m_embedding;
   const std::vector<double>* m_density;   // by vertex, or null

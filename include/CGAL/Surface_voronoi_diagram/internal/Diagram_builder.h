@@ -22,7 +22,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
@@ -86,7 +86,7 @@ public:
     m_timer.stop("propagation");
     if(!progress(0.4)) return false;
 
-    m_cuts.assign(m_mesh.number_of_faces(), Face_cut());
+    m_cuts.reset(m_mesh.number_of_faces());
     cut_faces(propagation.candidates, nullptr);
     d.statistics.propagation_events = propagation.statistics.events;
     d.statistics.admitted_fields = propagation.statistics.admitted;
@@ -217,17 +217,10 @@ private:
 
   void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
   {
-    const std::size_t count = which ? which->size() : m_cuts.size();
-    parallel_for_each_index(count, m_settings.parallel, [&](std::size_t k) {
-      const std::size_t f = which ? (*which)[k] : k;
-      if(candidates[f].size() == 1)
-      {
-        m_cuts[f] = Face_cut();
-        m_cuts[f].whole_face = true;
-      }
-      else
-        m_cuts[f] = candidates[f].empty() ? Face_cut() : Face_cutter(candidates[f]).cut();
-    });
+    if(which)
+      m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
+    else
+      m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
   }
 
   void summarize(const std::vector<std::size_t>& regions_of_site)
@@ -294,7 +287,7 @@ private:
   Builder_settings m_settings;
   const std::function<bool(double)>& m_callback;
   Stage_timer m_timer;
-  std::vector<Face_cut> m_cuts;
+  Face_cuts m_cuts;
 };
 
 } // namespace internal

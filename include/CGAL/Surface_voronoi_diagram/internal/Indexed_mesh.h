@@ -48,25 +48,28 @@ struct Indexed_mesh
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
 
-  static constexpr std::size_t none = std::size_t(-1);
+  /// Vertex, face and edge indices: 32 bits, which halves the connectivity arrays of a
+  /// million-face mesh (a mesh with 2^32 - 1 elements or more is rejected by `build()`).
+  typedef std::uint32_t Index;
+  static constexpr Index none = Index(-1);
 
   const TriangleMesh* source_mesh = nullptr;                     // the mesh this is a copy of
   std::vector<vertex_descriptor> vertex_handles;                 // index -> descriptor
   std::vector<face_descriptor> face_handles;
   std::vector<Point_d> points;
-  std::vector<std::array<std::size_t, 3> > triangles;            // corners, counter-clockwise
+  std::vector<std::array<Index, 3> > triangles;                  // corners, counter-clockwise
   // Local edge k of a face joins corners k and k+1; its neighbour across, or `none` on a border.
-  std::vector<std::array<std::size_t, 3> > neighbors;
-  std::vector<std::array<std::size_t, 3> > edges;                // global edge index of local edge k
-  std::vector<std::array<std::size_t, 2> > edge_vertices;        // sorted vertex indices
+  std::vector<std::array<Index, 3> > neighbors;
+  std::vector<std::array<Index, 3> > edges;                      // global edge index of local edge k
+  std::vector<std::array<Index, 2> > edge_vertices;              // sorted vertex indices
   std::vector<double> face_areas;
-  std::vector<std::size_t> face_component;                       // connected component of each face
+  std::vector<Index> face_component;                             // connected component of each face
   std::size_t number_of_components = 0;
   double total_area = 0;
   double bbox_diagonal = 0;
 
-  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::const_type Vertex_index_map;
-  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<std::size_t> >::const_type Face_index_map;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<Index> >::const_type Vertex_index_map;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<Index> >::const_type Face_index_map;
   Vertex_index_map vertex_index;
   Face_index_map face_index;
 
@@ -82,30 +85,32 @@ struct Indexed_mesh
   template <class VertexPointMap>
   void build(const TriangleMesh& tm, VertexPointMap vpm)
   {
+    CGAL_precondition_msg(num_vertices(tm) < std::size_t(none) && num_faces(tm) < std::size_t(none) / 2,
+                          "the mesh has too many elements for 32-bit indices");
     source_mesh = &tm;
-    vertex_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-    face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+    vertex_index = get(CGAL::dynamic_vertex_property_t<Index>(), tm);
+    face_index = get(CGAL::dynamic_face_property_t<Index>(), tm);
     vertex_handles.reserve(num_vertices(tm));
     points.reserve(num_vertices(tm));
     for(vertex_descriptor v : vertices(tm))
     {
-      put(vertex_index, v, vertex_handles.size());
+      put(vertex_index, v, Index(vertex_handles.size()));
       vertex_handles.push_back(v);
       points.push_back(to_point_d(get(vpm, v)));
     }
     face_handles.reserve(num_faces(tm));
     for(face_descriptor f : faces(tm))
     {
-      put(face_index, f, face_handles.size());
+      put(face_index, f, Index(face_handles.size()));
       face_handles.push_back(f);
     }
 
     const std::size_t nf = face_handles.size();
     triangles.resize(nf);
-    neighbors.assign(nf, std::array<std::size_t, 3>{ none, none, none });
+    neighbors.assign(nf, std::array<Index, 3>{ none, none, none });
     edges.resize(nf);
     face_areas.resize(nf);
-    for(std::size_t fi = 0; fi < nf; ++fi)
+    for(Index fi = 0; fi < nf; ++fi)
     {
       halfedge_descriptor h = halfedge(face_handles[fi], tm);
       for(int k = 0; k < 3; ++k)
@@ -123,13 +128,18 @@ struct Indexed_mesh
     }
 
     // Global edge ids: the face with the smaller index names the edge first.
-    for(std::size_t fi = 0; fi < nf; ++fi)
+    // (counted first: growing by doubling held a third more at the peak)
+    std::size_t number_of_new_edges = 0;
+    for(Index fi = 0; fi < nf; ++fi)
+      for(int k = 0; k < 3; ++k) number_of_new_edges += (neighbors[fi][k] == none || neighbors[fi][k] > fi);
+    edge_vertices.reserve(number_of_new_edges);
+    for(Index fi = 0; fi < nf; ++fi)
       for(int k = 0; k < 3; ++k)
       {
-        const std::size_t g = neighbors[fi][k];
+        const Index g = neighbors[fi][k];
         if(g != none && g < fi)
         {
-          const std::size_t a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
+          const Index a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
           int kg = -1;
           for(int l = 0; l < 3; ++l)
             if(triangles[g][l] == b && triangles[g][(l + 1) % 3] == a && neighbors[g][l] == fi)
@@ -139,8 +149,8 @@ struct Indexed_mesh
         }
         else
         {
-          edges[fi][k] = edge_vertices.size();
-          const std::size_t a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
+          edges[fi][k] = Index(edge_vertices.size());
+          const Index a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
           edge_vertices.push_back({ (std::min)(a, b), (std::max)(a, b) });
         }
       }
@@ -189,11 +199,11 @@ private:
     const std::size_t nf = triangles.size();
     face_component.assign(nf, none);
     number_of_components = 0;
-    std::vector<std::size_t> root_id(points.size(), none);
+    std::vector<Index> root_id(points.size(), none);
     for(std::size_t f = 0; f < nf; ++f)
     {
       const std::size_t r = sets.find(triangles[f][0]);
-      if(root_id[r] == none) root_id[r] = number_of_components++;
+      if(root_id[r] == none) root_id[r] = Index(number_of_components++);
       face_component[f] = root_id[r];
     }
   }

@@ -43,12 +43,12 @@ struct Partition
     double t;              // ON_EDGE: parameter from the edge's lower vertex index
   };
   /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (a heap block per
-  /// piece was a million allocations and frees on a 537k-vertex mesh).
-  typedef boost::container::small_vector<std::size_t, 4> Vertex_cycle;
+  /// piece was a million allocations and frees on a 537k-vertex mesh), in 32 bits.
+  typedef boost::container::small_vector<std::uint32_t, 4> Vertex_cycle;
 
   struct Piece
   {
-    std::size_t face;
+    std::uint32_t face;
     std::size_t site;      // no_site where no site reaches
     Vertex_cycle vertices;   // counter-clockwise, as the face
     double area;

@@ -26,7 +26,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
@@ -50,7 +50,7 @@ class Symbolic_cell_check
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  Symbolic_cell_check(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts)
+  Symbolic_cell_check(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts)
   {}
 
@@ -269,7 +269,7 @@ private:
   // The index in face g's cut of the piece of `site`, or no_site.
   std::size_t piece_in_face(std::size_t g, std::uint32_t site) const
   {
-    const Face_cut& cut = m_cuts[g];
+    const Face_cuts::Cut cut = m_cuts[g];
     const Candidate_list& list = m_candidates[g];
     if(list.empty()) return no_site;
     if(cut.whole_face) return list[0].site == site ? 0 : no_site;
@@ -303,7 +303,7 @@ private:
 
   const Candidate& candidate_of(std::size_t f, std::size_t local) const
   {
-    const Face_cut& cut = m_cuts[f];
+    const Face_cuts::Cut cut = m_cuts[f];
     return m_candidates[f][cut.whole_face ? 0 : cut.pieces[local].candidate];
   }
 
@@ -411,7 +411,7 @@ private:
       else if(m_cuts[f].whole_face)
         m_site_of_piece.push_back(list[0].site);
       else
-        for(const Symbolic_piece& piece : m_cuts[f].pieces) m_site_of_piece.push_back(list[piece.candidate].site);
+        for(const Face_cuts::Piece piece : m_cuts[f].pieces) m_site_of_piece.push_back(list[piece.candidate].site);
     }
     m_piece_begin[nf] = m_site_of_piece.size();
     return true;
@@ -428,14 +428,14 @@ private:
   // parameters along the mesh edge (from its lower vertex index); false if it has none.
   bool segment_on_edge(std::size_t f, std::size_t local, int k, double& lo, double& hi) const
   {
-    const Face_cut& cut = m_cuts[f];
+    const Face_cuts::Cut cut = m_cuts[f];
     if(cut.whole_face || cut.pieces.size() <= 1)
     {
       lo = 0.;
       hi = 1.;
       return true;
     }
-    const Symbolic_piece& piece = cut.pieces[local];
+    const Face_cuts::Piece piece = cut.pieces[local];
     const std::size_t m = piece.vertices.size();
     for(std::size_t j = 0; j < m; ++j)
     {
@@ -471,10 +471,10 @@ private:
   // the sites on both sides of every bisector stretch inside face f
   void bisector_pairs(std::size_t f, Union_sink& out) const
   {
-    const Face_cut& cut = m_cuts[f];
+    const Face_cuts::Cut cut = m_cuts[f];
     if(cut.whole_face || cut.pieces.size() <= 1) return;
     const Candidate_list& list = m_candidates[f];
-    for(const Symbolic_piece& piece : cut.pieces)
+    for(const Face_cuts::Piece piece : cut.pieces)
       for(const Piece_edge_support& support : piece.supports)
         if(!support.on_mesh_edge && piece.candidate < support.other)
           out.pair(list[piece.candidate].site, list[support.other].site);
@@ -518,7 +518,7 @@ private:
 
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
-  const std::vector<Face_cut>& m_cuts;
+  const Face_cuts& m_cuts;
   std::vector<std::size_t> m_piece_begin;
   std::vector<std::size_t> m_site_of_piece;
 };

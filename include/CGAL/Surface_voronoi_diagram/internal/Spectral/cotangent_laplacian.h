@@ -35,17 +35,18 @@ namespace internal {
 /// The three cotangents of a face share its one cross product (cot = dot / |cross|), which
 /// CGAL::Weights::cotangent would recompute per corner.
 /// \pre no triangle has zero area (its cotangents would be infinite)
-inline void assemble_cotangent_laplacian(const std::vector<Point_d>& points,
-                                         const std::vector<std::array<std::size_t, 3> >& triangles,
-                                         Eigen::SparseMatrix<double>& L,
-                                         Eigen::SparseMatrix<double>& M)
+template <class Index>
+void assemble_cotangent_laplacian(const std::vector<Point_d>& points,
+                                  const std::vector<std::array<Index, 3> >& triangles,
+                                  Eigen::SparseMatrix<double>& L,
+                                  Eigen::SparseMatrix<double>& M)
 {
   const Eigen::Index n = static_cast<Eigen::Index>(points.size());
   std::vector<Eigen::Triplet<double> > lt;
   lt.reserve(triangles.size() * 12);
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
 
-  for(const std::array<std::size_t, 3>& t : triangles)
+  for(const std::array<Index, 3>& t : triangles)
   {
     const Point_d* p[3] = { &points[t[0]], &points[t[1]], &points[t[2]] };
     const double twice_area = std::sqrt(CGAL::cross_product(*p[1] - *p[0], *p[2] - *p[0]).squared_length());

@@ -26,7 +26,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
@@ -54,7 +54,7 @@ public:
 
   /// With `parallel`, the steps that work vertex by vertex, piece by piece or face by face
   /// run in concurrent chunks; naming the vertices (ids in face order) stays sequential.
-  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const std::vector<Face_cut>& cuts, bool parallel = false)
+  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts, bool parallel = false)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_parallel(parallel)
   {}
 
@@ -73,17 +73,18 @@ public:
 
 private:
   // A vertex id's key, and a face whose candidate list holds every site of the key.
+  // (32-bit indices: a million-face mesh names about as many vertices)
   struct Origin
   {
     Vertex_key key;
-    std::size_t face;
+    std::uint32_t face;
   };
   // A bisector crossing already named, grouped by the face that named it.
   struct Edge_crossing_entry
   {
-    std::size_t edge;
+    std::uint32_t edge;
     std::uint32_t low_site, high_site;
-    std::size_t id;
+    std::uint32_t id;
   };
 
   std::uint32_t site_of(std::size_t f, std::uint32_t candidate) const { return m_candidates[f][candidate].site; }
@@ -103,7 +104,8 @@ private:
 
   std::size_t new_id(const Vertex_key& k, std::size_t f)
   {
-    m_origins.push_back(Origin{ k, f });
+    CGAL_precondition_msg(m_origins.size() < std::size_t(0xffffffffu), "too many partition vertices for 32-bit ids");
+    m_origins.push_back(Origin{ k, std::uint32_t(f) });
     return m_origins.size() - 1;
   }
 
@@ -142,7 +144,7 @@ private:
       std::size_t id = find_in(m_edge_crossings_begin[f], m_edge_crossings.size());
       if(id != no_site) return id;
       id = new_id(k, f);
-      m_edge_crossings.push_back(Edge_crossing_entry{ e, k.sites[0], k.sites[1], id });
+      m_edge_crossings.push_back(Edge_crossing_entry{ std::uint32_t(e), k.sites[0], k.sites[1], std::uint32_t(id) });
       return id;
     }
     for(std::size_t id = m_triple_begin; id < m_origins.size(); ++id)
@@ -176,16 +178,16 @@ private:
       // its only candidate (as the cutter's one piece would be)
       if(m_candidates[f].empty() || m_cuts[f].whole_face)
       {
-        Partition::Piece p{ f, m_candidates[f].empty() ? no_site : m_candidates[f][0].site, {}, 0. };
+        Partition::Piece p{ std::uint32_t(f), m_candidates[f].empty() ? no_site : m_candidates[f][0].site, {}, 0. };
         p.vertices.reserve(3);
         for(int k = 0; k < 3; ++k)
           p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
         out.pieces.push_back(std::move(p));
         continue;
       }
-      for(const Symbolic_piece& sp : m_cuts[f].pieces)
+      for(const Face_cuts::Piece sp : m_cuts[f].pieces)
       {
-        Partition::Piece p{ f, m_candidates[f][sp.candidate].site, {}, 0. };
+        Partition::Piece p{ std::uint32_t(f), m_candidates[f][sp.candidate].site, {}, 0. };
         p.vertices.reserve(sp.vertices.size());
         for(const Symbolic_vertex& v : sp.vertices)
           p.vertices.push_back(id_of(key_of(f, sp.candidate, v), f));
@@ -353,7 +355,7 @@ private:
       if(m_representative[id] != id) ++out.welded_vertices;
     for(Partition::Piece& p : out.pieces)
     {
-      for(std::size_t& id : p.vertices) id = m_representative[id];
+      for(std::uint32_t& id : p.vertices) id = std::uint32_t(m_representative[id]);
       remove_cyclic_repeats(p.vertices);
     }
     const std::size_t before = out.pieces.size();
@@ -500,7 +502,7 @@ private:
         if(welded.find(id) != id) ++out.welded_vertices;
       for(Partition::Piece& p : out.pieces)
       {
-        for(std::size_t& id : p.vertices) id = welded.find(id);
+        for(std::uint32_t& id : p.vertices) id = std::uint32_t(welded.find(id));
         remove_cyclic_repeats(p.vertices);
       }
     }
@@ -613,7 +615,7 @@ private:
 
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
-  const std::vector<Face_cut>& m_cuts;
+  const Face_cuts& m_cuts;
   bool m_parallel;
   Partition* m_out = nullptr;
   std::vector<Origin> m_origins;                      // by vertex id
@@ -628,7 +630,7 @@ private:
 /// Builds the partition from the candidate lists and the per-face cuts.
 template <class TriangleMesh>
 void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
-            const std::vector<Face_cut>& cuts, Partition& out, bool parallel = false)
+            const Face_cuts& cuts, Partition& out, bool parallel = false)
 {
   Stitcher<TriangleMesh>(mesh, candidates, cuts, parallel).run(out);
 }

@@ -32,22 +32,22 @@ struct Vertex_key
   enum Kind : std::uint8_t { MESH_VERTEX, EDGE_CROSSING, TRIPLE_POINT };
 
   Kind kind;
-  std::uint64_t element;                 // the mesh vertex, the mesh edge, or the face
+  std::uint32_t element;                 // the mesh vertex, the mesh edge, or the face (32-bit, as Indexed_mesh)
   std::array<std::uint32_t, 3> sites;    // ascending; EDGE_CROSSING uses two, MESH_VERTEX none
 
   static Vertex_key mesh_vertex(std::size_t v)
   {
-    return Vertex_key{ MESH_VERTEX, v, {{ 0, 0, 0 }} };
+    return Vertex_key{ MESH_VERTEX, std::uint32_t(v), {{ 0, 0, 0 }} };
   }
   static Vertex_key edge_crossing(std::size_t e, std::uint32_t s, std::uint32_t t)
   {
-    return Vertex_key{ EDGE_CROSSING, e, {{ (std::min)(s, t), (std::max)(s, t), 0 }} };
+    return Vertex_key{ EDGE_CROSSING, std::uint32_t(e), {{ (std::min)(s, t), (std::max)(s, t), 0 }} };
   }
   static Vertex_key triple_point(std::size_t f, std::uint32_t a, std::uint32_t b, std::uint32_t c)
   {
     std::array<std::uint32_t, 3> s = {{ a, b, c }};
     std::sort(s.begin(), s.end());
-    return Vertex_key{ TRIPLE_POINT, f, s };
+    return Vertex_key{ TRIPLE_POINT, std::uint32_t(f), s };
   }
 
   bool operator==(const Vertex_key& o) const { return kind == o.kind && element == o.element && sites == o.sites; }

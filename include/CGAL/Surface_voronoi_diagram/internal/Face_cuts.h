@@ -1,0 +1,262 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The cuts of all the faces of a diagram, in four flat arrays (a record per face, then the
+// pieces, their vertices and their edges' supports) instead of a vector of pieces per face,
+// each with its own inline buffers: on a million-face mesh that was 150 MB, the largest
+// allocation of a diagram, for what fits in about half. The stages read a face's cut through
+// a light view (`operator[]`) with the members of `Face_cut`.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+
+#include <CGAL/assertions.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+class Face_cuts
+{
+  struct Face_record
+  {
+    std::uint32_t first_piece = 0;
+    std::uint16_t number_of_pieces = 0;
+    bool whole_face = false;
+    bool degenerate = false;
+  };
+  struct Piece_record
+  {
+    std::uint32_t candidate;
+    std::uint32_t first_vertex;   // into the vertices and the supports alike
+    std::uint32_t number_of_vertices;
+  };
+
+public:
+  /// a run of elements of one of the arrays
+  template <class T>
+  class Span
+  {
+  public:
+    Span(const T* b, std::size_t n) : m_begin(b), m_size(n) {}
+    std::size_t size() const { return m_size; }
+    bool empty() const { return m_size == 0; }
+    const T& operator[](std::size_t i) const { return m_begin[i]; }
+    const T* begin() const { return m_begin; }
+    const T* end() const { return m_begin + m_size; }
+
+  private:
+    const T* m_begin;
+    std::size_t m_size;
+  };
+
+  /// a piece as `Symbolic_piece` has it
+  struct Piece
+  {
+    std::uint32_t candidate;
+    Span<Symbolic_vertex> vertices;
+    Span<Piece_edge_support> supports;
+  };
+
+  /// the pieces of one face
+  class Pieces
+  {
+  public:
+    class iterator
+    {
+    public:
+      iterator(const Pieces* p, std::size_t i) : m_pieces(p), m_index(i) {}
+      Piece operator*() const { return (*m_pieces)[m_index]; }
+      iterator& operator++() { ++m_index; return *this; }
+      bool operator!=(const iterator& o) const { return m_index != o.m_index; }
+      bool operator==(const iterator& o) const { return m_index == o.m_index; }
+
+    private:
+      const Pieces* m_pieces;
+      std::size_t m_index;
+    };
+
+    Pieces(const Face_cuts* cuts, std::size_t first, std::size_t count) : m_cuts(cuts), m_first(first), m_count(count) {}
+    std::size_t size() const { return m_count; }
+    bool empty() const { return m_count == 0; }
+    Piece operator[](std::size_t i) const { return m_cuts->piece(m_first + i); }
+    iterator begin() const { return iterator(this, 0); }
+    iterator end() const { return iterator(this, m_count); }
+
+  private:
+    const Face_cuts* m_cuts;
+    std::size_t m_first, m_count;
+  };
+
+  /// one face's cut, as `Face_cut` has it
+  struct Cut
+  {
+    Pieces pieces;
+    bool degenerate;
+    bool whole_face;
+  };
+
+  std::size_t number_of_faces() const { return m_faces.size(); }
+
+  Cut operator[](std::size_t f) const
+  {
+    const Face_record& r = m_faces[f];
+    return Cut{ Pieces(this, r.first_piece, r.number_of_pieces), r.degenerate, r.whole_face };
+  }
+
+  /// every face without a cut (reached by nobody)
+  void reset(std::size_t number_of_faces)
+  {
+    m_faces.assign(number_of_faces, Face_record());
+    m_pieces.clear();
+    m_vertices.clear();
+    m_supports.clear();
+  }
+
+  /// Cuts the faces `faces[0 .. count)` (`face(k)` gives the k-th) on their candidate lists,
+  /// in concurrent chunks when `parallel`. A face cut again keeps its old pieces in the
+  /// arrays unused (repair rounds cut few faces again); the arrays' layout depends on `faces`
+  /// alone, not on the threads.
+  template <class FaceOfIndex>
+  void cut(const Candidate_lists& candidates, std::size_t count, const FaceOfIndex& face, bool parallel)
+  {
+    const std::size_t chunk_size = 8192;
+    if(!parallel)
+    {
+      // chunk by chunk into one buffer, so that no second copy of the cuts is ever held
+      Buffer buffer;
+      for_each_chunk(count, chunk_size, false, [&](std::size_t begin, std::size_t end, std::size_t) {
+        buffer.clear();
+        for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffer);
+        append(buffer);
+      });
+      return;
+    }
+    std::vector<Buffer> buffers(number_of_chunks(count, chunk_size));
+    for_each_chunk(count, chunk_size, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffers[c]);
+    });
+    for(Buffer& b : buffers)
+    {
+      append(b);
+      Buffer().swap(b);
+    }
+  }
+
+  /// sets face f's cut to `c` (tests build cuts face by face)
+  void set(std::size_t f, const Face_cut& c)
+  {
+    Buffer buffer;
+    buffer.add(f, c);
+    append(buffer);
+  }
+
+private:
+  // what a chunk of faces cut: records with offsets into its own arrays
+  struct Buffer
+  {
+    std::vector<std::pair<std::size_t, Face_record> > faces;
+    std::vector<Piece_record> pieces;
+    std::vector<Symbolic_vertex> vertices;
+    std::vector<Piece_edge_support> supports;
+
+    void clear()
+    {
+      faces.clear();
+      pieces.clear();
+      vertices.clear();
+      supports.clear();
+    }
+
+    void swap(Buffer& o)
+    {
+      faces.swap(o.faces);
+      pieces.swap(o.pieces);
+      vertices.swap(o.vertices);
+      supports.swap(o.supports);
+    }
+
+    void add(std::size_t f, const Face_cut& c)
+    {
+      Face_record r;
+      r.first_piece = std::uint32_t(pieces.size());
+      r.whole_face = c.whole_face;
+      r.degenerate = c.degenerate;
+      CGAL_assertion(c.pieces.size() <= 0xffff);
+      r.number_of_pieces = std::uint16_t(c.pieces.size());
+      for(const Symbolic_piece& p : c.pieces)
+      {
+        pieces.push_back(Piece_record{ p.candidate, std::uint32_t(vertices.size()), std::uint32_t(p.vertices.size()) });
+        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
+        supports.insert(supports.end(), p.supports.begin(), p.supports.end());
+      }
+      faces.emplace_back(f, r);
+    }
+  };
+
+  static void cut_face(const Candidate_lists& candidates, std::size_t f, Buffer& buffer)
+  {
+    const Candidate_list& list = candidates[f];
+    Face_cut c;
+    if(list.size() == 1)
+      c.whole_face = true;   // the only candidate owns the whole triangle: no piece stored
+    else if(!list.empty())
+      c = Face_cutter(list).cut();
+    buffer.add(f, c);
+  }
+
+  void append(const Buffer& b)
+  {
+    CGAL_precondition_msg(m_vertices.size() + b.vertices.size() < std::size_t(0xffffffffu)
+                          && m_pieces.size() + b.pieces.size() < std::size_t(0xffffffffu),
+                          "too many cut pieces for 32-bit offsets");
+    const std::uint32_t piece_offset = std::uint32_t(m_pieces.size());
+    const std::uint32_t vertex_offset = std::uint32_t(m_vertices.size());
+    for(const Piece_record& p : b.pieces)
+      m_pieces.push_back(Piece_record{ p.candidate, p.first_vertex + vertex_offset, p.number_of_vertices });
+    m_vertices.insert(m_vertices.end(), b.vertices.begin(), b.vertices.end());
+    m_supports.insert(m_supports.end(), b.supports.begin(), b.supports.end());
+    for(const auto& fr : b.faces)
+    {
+      Face_record r = fr.second;
+      r.first_piece += piece_offset;
+      m_faces[fr.first] = r;
+    }
+  }
+
+  Piece piece(std::size_t p) const
+  {
+    const Piece_record& r = m_pieces[p];
+    return Piece{ r.candidate, Span<Symbolic_vertex>(m_vertices.data() + r.first_vertex, r.number_of_vertices),
+                  Span<Piece_edge_support>(m_supports.data() + r.first_vertex, r.number_of_vertices) };
+  }
+
+  std::vector<Face_record> m_faces;
+  std::vector<Piece_record> m_pieces;
+  std::vector<Symbolic_vertex> m_vertices;
+  std::vector<Piece_edge_support> m_supports;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H
