@@ -21,6 +21,8 @@
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
+#include <CGAL/Surface_voronoi_diagram/valid_geodesic_dual_sites.h>
+#include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
@@ -102,6 +104,27 @@ void compare(const Mesh& mesh, const std::vector<Point>& points, const std::vect
   chamfer = 0.5 * (sum1 / double(samples) + sum2 / double(samples)) / diagonal;
 }
 
+// The row of the dual of `vd` (on a mesh with the surface of `mesh`), against `mesh`
+template <class Diagram>
+Row dual_row(const std::string& model, const std::string& method, const Mesh& mesh, const Diagram& vd, std::size_t added,
+             std::chrono::steady_clock::time_point t0, double setup, std::size_t samples)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3> > tris;
+  Row row;
+  row.model = model;
+  row.method = method;
+  row.vertices = num_vertices(mesh);
+  SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(tris));
+  row.validity = SV::validate_dual_triangulation(vd, points, tris);
+  row.triangles = tris.size();
+  row.sites = vd.number_of_sites();
+  row.sites_added = added;
+  row.seconds = setup + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  compare(mesh, points, tris, samples, row.hausdorff, row.chamfer);
+  return row;
+}
+
 // `np`: the named parameters of the diagram, for Lloyd's diagrams and the final one
 // `valid_dual`: sites added after Lloyd until the dual is a valid mesh
 template <class Metric, class NamedParameters>
@@ -119,20 +142,27 @@ Row remesh(const std::string& model, const std::string& method, const Mesh& mesh
     added = r.sites_added;
   }
   CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, np);
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3> > tris;
-  Row row;
-  row.model = model;
-  row.method = method;
-  row.vertices = num_vertices(mesh);
-  SV::dual_triangulation(vd, std::back_inserter(points), std::back_inserter(tris));
-  row.validity = SV::validate_dual_triangulation(vd, points, tris);
-  row.triangles = tris.size();
-  row.sites = sites.size();
-  row.sites_added = added;
-  row.seconds = setup + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  compare(mesh, points, tris, samples, row.hausdorff, row.chamfer);
-  return row;
+  return dual_row(model, method, mesh, vd, added, t0, setup, samples);
+}
+
+// The geodesic metric with the opt-in, as the program runs it (`--metric geodesic
+// --valid-dual`): Lloyd on the input mesh, sites added on copies refined for them
+// (add_sites_for_valid_geodesic_dual()), and the final diagram on the mesh refined for all of
+// them by the local spacing.
+Row remesh_geodesic_valid(const std::string& model, const Mesh& mesh, std::size_t n, std::size_t lloyd, std::size_t samples)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  SV::Geodesic_metric<Mesh> metric(mesh);
+  const auto sites = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
+                                          CGAL::parameters::number_of_iterations(lloyd)).sites;
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_geodesic_dual(mesh, sites);
+  Mesh refined;
+  const SV::Refined_sites<Mesh> refinement = SV::refine_for_sites(mesh, r.sites, refined, SV::parameters::refinement_local_spacing(true));
+  const bool use_refined = refinement.edges_split > 0 && !refinement.vertex_limit_reached;
+  const Mesh& work = use_refined ? refined : mesh;
+  SV::Geodesic_metric<Mesh> final_metric(work);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > vd(work, final_metric, use_refined ? refinement.sites : r.sites);
+  return dual_row(model, "geodesic", mesh, vd, r.sites_added, t0, 0., samples);
 }
 
 std::string biharmonic_label(const std::string& asked, std::size_t d)
@@ -235,10 +265,12 @@ int main(int argc, char** argv)
         const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
         rows.push_back(remesh(entry.first, biharmonic_label(dimension, d), m, bh, defaults, n, lloyd, samples, setup, valid_dual));
       }
-      if(wanted("geodesic"))
+      if(wanted("geodesic") && valid_dual)
+        rows.push_back(remesh_geodesic_valid(entry.first, m, n, lloyd, samples));
+      else if(wanted("geodesic"))
       {
         SV::Geodesic_metric<Mesh> geodesic(m);
-        rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., valid_dual));
+        rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., false));
       }
     }
     catch(const std::exception& e)

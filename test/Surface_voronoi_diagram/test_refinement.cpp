@@ -11,6 +11,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <map>
+#include <random>
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -116,4 +117,66 @@ TEST_CASE("refinement: a thin strip reaches a small vertex cap quickly and gives
   CHECK(r.vertex_limit_reached);
   CHECK(r.sites.empty());
   CHECK(num_vertices(refined) <= 1536);
+}
+
+// The local rule (refinement_local_spacing): on a coarse square where 150 sites crowd one
+// corner (0.09 wide) and 50 lie on a lattice wider than the mean spacing over the rest, the edges in the
+// crowded corner come down to the spacing of the sites there, which the mean rule
+// (sqrt(area / sites)) leaves several times as coarse; elsewhere, where the local spacing is
+// capped by the mean one, both rules refine alike. Same surface, sites in place.
+TEST_CASE("refinement: the local spacing refines where the sites crowd, and only there", "[refinement]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 5, 5);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> corner(0.01, 0.09);
+  std::vector<Location<Mesh> > sites;
+  for(int k = 0; k < 150; ++k) sites.push_back(CGAL::Polygon_mesh_processing::locate(Point(corner(rng), corner(rng), 0), m));
+  for(int i = 0; i < 7; ++i)
+    for(int j = 0; j < 7; ++j) sites.push_back(CGAL::Polygon_mesh_processing::locate(Point(0.3 + 0.1 * i, 0.3 + 0.1 * j, 0), m));
+  sites.push_back(CGAL::Polygon_mesh_processing::locate(Point(0.95, 0.1, 0), m));
+  Mesh mean_mesh, local_mesh;
+  const auto mean = SV::refine_for_sites(m, sites, mean_mesh);
+  const auto local = SV::refine_for_sites(m, sites, local_mesh, SV::parameters::refinement_local_spacing(true));
+  REQUIRE(!mean.vertex_limit_reached);
+  REQUIRE(!local.vertex_limit_reached);
+  CHECK(PMP::area(local_mesh) == Approx(1.).epsilon(1e-12));
+  REQUIRE(local.sites.size() == sites.size());
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    CHECK(CGAL::squared_distance(point_of(sites[i], m), point_of(local.sites[i], local_mesh)) < 1e-24);
+
+  // the oracle's spacing of the crowded sites: the largest distance from one of them to its
+  // nearest other site, at most the mean spacing
+  const double mean_spacing = std::sqrt(1. / 200);
+  double crowded = 0;
+  for(std::size_t i = 0; i < 150; ++i)
+  {
+    double nearest = mean_spacing;
+    for(std::size_t j = 0; j < sites.size(); ++j)
+      if(j != i) nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(point_of(sites[i], m), point_of(sites[j], m))));
+    crowded = (std::max)(crowded, nearest);
+  }
+  REQUIRE(crowded < 0.5 * mean_spacing);
+  // in the crowded corner (away from its edge, where the sparse sites' spacing takes over),
+  // edges are within the trigger (0.75) of that spacing, allowing for the diagonals a split
+  // leaves at most as long as the legs of a grid triangle (a factor sqrt(2))
+  auto longest_in_corner = [](const Mesh& g) {
+    double longest = 0;
+    for(auto e : edges(g))
+    {
+      const Point mid = CGAL::midpoint(g.point(source(halfedge(e, g), g)), g.point(target(halfedge(e, g), g)));
+      if(mid.x() < 0.07 && mid.y() < 0.07) longest = (std::max)(longest, std::sqrt(PMP::squared_edge_length(e, g)));
+    }
+    return longest;
+  };
+  CHECK(longest_in_corner(local_mesh) <= 0.75 * std::sqrt(2.) * crowded);
+  CHECK(longest_in_corner(mean_mesh) > 0.75 * std::sqrt(2.) * crowded);
+  // away from the corner the two rules agree on the vertex count to within a fifth
+  auto vertices_outside = [](const Mesh& g) {
+    std::size_t count = 0;
+    for(auto v : vertices(g)) count += (g.point(v).x() > 0.4 || g.point(v).y() > 0.4);
+    return count;
+  };
+  INFO("outside the corner: mean rule " << vertices_outside(mean_mesh) << ", local rule " << vertices_outside(local_mesh));
+  CHECK(std::abs(double(vertices_outside(local_mesh)) - double(vertices_outside(mean_mesh))) <= 0.2 * double(vertices_outside(mean_mesh)));
 }

@@ -190,3 +190,45 @@ TEST_CASE("valid dual: folds over a thin plate's rim get sites on the rim, and t
   SV::dual_triangulation(after, std::back_inserter(points), std::back_inserter(triangles));
   CHECK(SV::validate_dual_triangulation(after, points, triangles).is_valid());
 }
+
+// stop_on_coarse_mesh: an added site crowds the mesh when its face has an edge longer than
+// 1.5 times its distance to the nearest other site (at least a sixteenth of the mean spacing).
+// On a square of two triangles a site added 0.01 from a given one does; on a fine grid it
+// does not, nor does one 0.0005 away (below the floor); given sites never count.
+TEST_CASE("valid dual: an added site crowds a coarse mesh and not a fine one", "[dual][validity]")
+{
+  auto crowds = [](const Mesh& m, const std::vector<Point>& points, std::size_t first_added) {
+    std::vector<Location<Mesh> > sites;
+    for(const Point& p : points) sites.push_back(CGAL::Polygon_mesh_processing::locate(p, m));
+    Euclidean e(m);
+    const Euclidean_diagram vd(m, e, sites);
+    return SV::internal::added_sites_crowd_the_mesh(vd, first_added);
+  };
+  Mesh coarse, fine;
+  GEN::make_planar_grid(coarse, 2, 2);
+  GEN::make_planar_grid(fine, 101, 101);
+  const std::vector<Point> close = { Point(0.2, 0.2, 0), Point(0.8, 0.8, 0), Point(0.21, 0.2, 0) };
+  CHECK(crowds(coarse, close, 2));
+  CHECK_FALSE(crowds(coarse, close, 3));   // no added site
+  CHECK_FALSE(crowds(fine, close, 2));
+  CHECK_FALSE(crowds(fine, { Point(0.2, 0.2, 0), Point(0.8, 0.8, 0), Point(0.2005, 0.2, 0) }, 2));
+  // on a grid of spacing 0.1 (diagonals 0.14), 0.05 from a site crowds, 0.6 does not
+  Mesh medium;
+  GEN::make_planar_grid(medium, 11, 11);
+  CHECK(crowds(medium, { Point(0.2, 0.2, 0), Point(0.8, 0.8, 0), Point(0.25, 0.2, 0) }, 2));
+  CHECK_FALSE(crowds(medium, { Point(0.2, 0.2, 0), Point(0.8, 0.8, 0), Point(0.8, 0.2, 0) }, 2));
+}
+
+// Where the added sites do not crowd the mesh, stop_on_coarse_mesh changes nothing.
+TEST_CASE("valid dual: on a fine mesh stop_on_coarse_mesh changes nothing", "[dual][validity]")
+{
+  Mesh torus;
+  GEN::make_torus(torus, 1.0, 0.4, 90, 36);
+  Euclidean e(torus);
+  const auto given = sites_around_torus(torus, 1.4, 3);
+  const SV::Valid_dual_result<Mesh> plain = SV::add_sites_for_valid_dual(torus, e, given);
+  const SV::Valid_dual_result<Mesh> checked = SV::add_sites_for_valid_dual(torus, e, given, SV::parameters::stop_on_coarse_mesh(true));
+  CHECK_FALSE(checked.mesh_too_coarse);
+  CHECK(checked.validity.is_valid());
+  CHECK(checked.sites == plain.sites);
+}

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
+#include <CGAL/Surface_voronoi_diagram/valid_geodesic_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/curvature_density.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
@@ -741,46 +742,31 @@ int run_main(int argc, char** argv)
       if(args.metric == "geodesic" && !args.insert_sites && !args.no_refine)
       {
         // The final diagram is built on the mesh refined for all the sites, so the sites are
-        // added there: refined for the sites so far, sites added on that mesh and brought back
-        // to the input mesh, until a refinement needs none (the one the final run builds).
-        r.sites = locations;
-        for(int pass = 0; pass < 8; ++pass)
+        // added on refined meshes (add_sites_for_valid_geodesic_dual()), which the final run's
+        // refinement (by the local spacing) makes again. The sites it adds are then moved to
+        // this program's canonical locations (by up to 2^-25 of a face), which can tip a tie
+        // of the dual: it is called again on them until it adds none, so that the validity it
+        // reports is that of exactly the final diagram.
+        std::vector<Location> current = locations;
+        std::size_t added = 0, rounds = 0;
+        for(int attempt = 0; attempt < 4; ++attempt)
         {
-          Mesh refined;
-          auto input_face = refined.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input_face").first;
-          const std::size_t max_vertices = refinement_cap(mesh, r.sites.size());
-          const SV::Refined_sites<Mesh> refinement = SV::refine_for_sites(mesh, r.sites, refined,
-              SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(input_face));
-          if(refinement.edges_split == 0)
+          r = with_diagram_parameters(choices,
+              SV::parameters::maximum_number_of_added_sites(max_added - added,
+                  SV::parameters::refinement_max_vertices(refinement_cap(mesh, given + max_added))),
+              [&](const auto& np) { return SV::add_sites_for_valid_geodesic_dual<CGAL::Parallel_if_available_tag>(mesh, current, np); });
+          added += r.sites_added;
+          rounds += r.rounds;
+          for(std::size_t i = current.size(); i < r.sites.size(); ++i)
           {
-            SV::Geodesic_metric<Mesh> metric(mesh);
-            const std::size_t before = r.sites_added;
-            r = with_diagram_parameters(choices,
-                SV::parameters::maximum_number_of_added_sites(max_added - before, CGAL::parameters::edge_is_constrained_map(breakline)),
-                [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(mesh, metric, r.sites, np); });
-            r.sites_added += before;
-            break;
-          }
-          SV::Geodesic_metric<Mesh> metric(refined);
-          const SV::Valid_dual_result<Mesh> on_refined = with_diagram_parameters(choices,
-              SV::parameters::maximum_number_of_added_sites(max_added - r.sites_added),
-              [&](const auto& np) { return SV::add_sites_for_valid_dual<CGAL::Parallel_if_available_tag>(refined, metric, refinement.sites, np); });
-          r.validity = on_refined.validity;
-          r.rounds += on_refined.rounds;
-          r.nothing_to_cut = on_refined.nothing_to_cut;
-          r.no_room_for_sites = on_refined.no_room_for_sites;
-          if(on_refined.sites_added == 0) break;
-          // the added sites, as locations of the input mesh (the refined faces lie in its faces)
-          for(std::size_t i = r.sites.size(); i < on_refined.sites.size(); ++i)
-          {
-            const Location& l = on_refined.sites[i];
-            const Point p = CGAL::Polygon_mesh_processing::construct_point(l, refined);
             Point q;
-            r.sites.push_back(canonical_location(locate_near(p, input_face[l.first], mesh), mesh, q));
+            current.push_back(canonical_location(r.sites[i], mesh, q));
           }
-          r.sites_added += on_refined.sites_added;
-          if(r.sites_added >= max_added) break;
+          if(r.sites_added == 0 || !r.validity.is_valid()) break;
         }
+        r.sites = current;
+        r.sites_added = added;
+        r.rounds = rounds;
       }
       else
         r = with_input_metric(args, mesh, dimension_for(mesh), add);
@@ -830,8 +816,10 @@ int run_main(int argc, char** argv)
         // a metric sampled at vertices needs vertices between the sites (coarse CAD meshes)
         const auto ti = Clock::now();
         const std::size_t max_vertices = refinement_cap(mesh, locations.size());
+        // (with --valid-dual, by the local spacing, as the sites were added on such meshes)
         const SV::Refined_sites<Mesh> r = SV::refine_for_sites(mesh, locations, refined,
-            SV::parameters::refinement_max_vertices(max_vertices), SV::parameters::input_face_map(refined_input_face));
+            SV::parameters::refinement_max_vertices(max_vertices, SV::parameters::refinement_local_spacing(args.valid_dual)),
+            SV::parameters::input_face_map(refined_input_face));
         if(r.vertex_limit_reached)
           fail(1, args.mesh + ": the refinement for the sites reached its cap of " + std::to_string(max_vertices)
                   + " vertices (the input's and at most " + std::to_string(refinement_vertices_per_element)

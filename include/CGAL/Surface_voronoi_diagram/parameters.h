@@ -65,6 +65,8 @@ enum max_eigen_solver_restarts_t { max_eigen_solver_restarts };
 enum refinement_trigger_ratio_t { refinement_trigger_ratio };
 enum refinement_edge_length_ratio_t { refinement_edge_length_ratio };
 enum refinement_max_vertices_t { refinement_max_vertices };
+enum refinement_local_spacing_t { refinement_local_spacing };
+enum stop_on_coarse_mesh_t { stop_on_coarse_mesh };
 enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
 enum cells_only_t { cells_only };
@@ -196,6 +198,23 @@ unspecified_type refinement_max_vertices(const T& value);
 template <class T, class NamedParameters>
 unspecified_type refinement_max_vertices(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `refinement_local_spacing`: whether
+/// `refine_for_sites()` measures the site spacing near each edge instead of on average (`bool`).
+template <class T>
+unspecified_type refinement_local_spacing(const T& value);
+/// The chain `chain` with `refinement_local_spacing(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type refinement_local_spacing(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `stop_on_coarse_mesh`: whether
+/// `add_sites_for_valid_dual()` returns as soon as the sites it added crowd closer than the
+/// mesh resolves, for the caller to refine the mesh (`bool`).
+template <class T>
+unspecified_type stop_on_coarse_mesh(const T& value);
+/// The chain `chain` with `stop_on_coarse_mesh(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type stop_on_coarse_mesh(const T& value, const NamedParameters& chain);
+
 /// A chain of named parameters holding `value` as `input_face_map`: a writable property map
 /// from output faces to input faces, filled by `make_arrangement()` and `refine_for_sites()`.
 template <class T>
@@ -245,6 +264,8 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_eigen_solver_restarts)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_trigger_ratio)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_edge_length_ratio)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_max_vertices)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_local_spacing)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stop_on_coarse_mesh)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(input_face_map)
 // An internal hook, not API: the command-line program reads stage times through it.
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)

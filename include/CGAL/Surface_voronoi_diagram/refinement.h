@@ -24,6 +24,7 @@
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Local_site_spacing.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Dynamic_property_map.h>
@@ -146,6 +147,18 @@ struct Refined_sites
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{20,000,000}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_local_spacing}
+///     \cgalParamDescription{whether the site spacing is measured locally: at an edge, as the
+///       distance from the site nearest to the edge's midpoint to that site's own nearest
+///       neighbour, or the midpoint's distance to that site if larger (straight-line
+///       distances; a site whose face faces away, across a thin wall, is no neighbour), within
+///       [1/16, 1] times the mean spacing. Where
+///       sites crowd (a thin bar that several rings of sites go around, as
+///       `add_sites_for_valid_dual()` places them), the mesh is refined in proportion; where
+///       they are evenly spaced, as after Lloyd steps, it is close to the mean rule.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`: the mean spacing `sqrt(area / sites.size())` everywhere}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \param np_out an optional sequence of named parameters for `out`:
 /// \cgalNamedParamsBegin
@@ -187,6 +200,7 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
   const double trigger_ratio = choose_parameter(get_parameter(np_in, internal_np::refinement_trigger_ratio), 0.75);
   const double edge_length_ratio = choose_parameter(get_parameter(np_in, internal_np::refinement_edge_length_ratio), 0.4);
   const std::size_t max_vertices = choose_parameter(get_parameter(np_in, internal_np::refinement_max_vertices), std::size_t(20000000));
+  const bool local_spacing = choose_parameter(get_parameter(np_in, internal_np::refinement_local_spacing), false);
   CGAL_precondition_msg(edge_length_ratio > 0 && std::isfinite(edge_length_ratio) && trigger_ratio >= edge_length_ratio
                         && std::isfinite(trigger_ratio), "refinement_edge_length_ratio must be positive and at most refinement_trigger_ratio");
   const std::size_t n = static_cast<std::size_t>(std::distance(std::begin(sites), std::end(sites)));
@@ -212,12 +226,22 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
     area += internal::triangle_area(internal::to_point_d(get(ovpm, source(h, out))), internal::to_point_d(get(ovpm, target(h, out))),
                                     internal::to_point_d(get(ovpm, target(next(h, out), out))));
   }
-  r.target_edge_length = edge_length_ratio * std::sqrt(area / double(n));
-  const double trigger = trigger_ratio * std::sqrt(area / double(n));
-  const double limit2 = r.target_edge_length * r.target_edge_length;
+  const double mean_spacing = std::sqrt(area / double(n));
+  r.target_edge_length = edge_length_ratio * mean_spacing;
   auto length2 = [&](E e) {
     return CGAL::to_double(CGAL::squared_distance(get(ovpm, source(halfedge(e, out), out)), get(ovpm, target(halfedge(e, out), out))));
   };
+  // the spacing at an edge: the mean one, or the local one of the site nearest its midpoint
+  const internal::Local_site_spacing spacing_near(
+      local_spacing ? internal::site_points_and_normals(tm, sites, vpm) : std::pair<std::vector<internal::Point_d>, std::vector<internal::Vector_d> >(),
+      mean_spacing);
+  auto spacing = [&](E e) {
+    if(!local_spacing) return mean_spacing;
+    const auto p = internal::to_point_d(get(ovpm, source(halfedge(e, out), out)));
+    const auto q = internal::to_point_d(get(ovpm, target(halfedge(e, out), out)));
+    return spacing_near(CGAL::midpoint(p, q));
+  };
+  auto above = [&](E e, double ratio) { return length2(e) > CGAL::square(ratio * spacing(e)); };
 
   // Edges get ids in the order they are created, so that ties between equal lengths are
   // broken the same way whatever the mesh type.
@@ -239,7 +263,7 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
   typedef std::pair<double, std::size_t> Item;
   std::priority_queue<Item> queue;
   for(E e : edges(out))
-    if(length2(e) > trigger * trigger) queue.push(Item(length2(e), id_of(e)));
+    if(above(e, trigger_ratio)) queue.push(Item(length2(e), id_of(e)));
   while(!queue.empty())
   {
     const Item top = queue.top();
@@ -277,7 +301,7 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
     // always gives shorter ones, so a diagonal as long as the split edge means a sliver
     // on the other side (a CAD mesh's needle), whose refinement would never end.
     for(E t : touched)
-      if(length2(t) > limit2 && length2(t) < top.first) queue.push(Item(length2(t), id_of(t)));
+      if(length2(t) < top.first && above(t, edge_length_ratio)) queue.push(Item(length2(t), id_of(t)));
   }
 
   if(!CGAL::parameters::is_default_parameter<NamedParametersOut, internal_np::input_face_map_t>::value)

@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -60,6 +61,10 @@ struct Valid_dual_result
   /// beside an existing one (a fold at a point where the surface is not smooth, such as the
   /// tip of a cone, that no site nearby resolves)
   bool no_room_for_sites = false;
+  /// whether it stopped (with `stop_on_coarse_mesh`), the dual still not valid, because sites
+  /// it added crowd closer than the mesh resolves: the caller refines the mesh for `sites`
+  /// (`refine_for_sites()` with `refinement_local_spacing`) and goes on there
+  bool mesh_too_coarse = false;
   /// the validity of the dual of the final sites; `validity.is_valid()` tells whether a valid
   /// dual was reached
   Dual_validity validity;
@@ -217,6 +222,40 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
   return found;
 }
 
+// Whether a site from index `first_added` on lies in a face with an edge longer than 1.5
+// times its distance to the nearest neighbour (at least a sixteenth of the mean spacing): the
+// mesh cannot resolve the sites there (see `stop_on_coarse_mesh`). Neighbours as the
+// refinement's local rule has them (Local_site_spacing.h): a site whose face faces away,
+// across a thin wall, is none, so that a refinement by that rule does resolve what this finds.
+template <class Diagram>
+bool added_sites_crowd_the_mesh(const Diagram& diagram, std::size_t first_added)
+{
+  const auto& data = Diagram_access::data(diagram);
+  const auto& mesh = *data.mesh;
+  const std::size_t n = data.sites.size();
+  if(first_added >= n) return false;
+  std::vector<Point_d> at(n);
+  std::vector<Vector_d> normal(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t f = data.sites[i].face;
+    at[i] = mesh.point_at(f, data.sites[i].barycentric);
+    normal[i] = CGAL::cross_product(mesh.corner(f, 1) - mesh.corner(f, 0), mesh.corner(f, 2) - mesh.corner(f, 0));
+  }
+  const double floor = std::sqrt(mesh.total_area / double(n)) / 16;
+  for(std::size_t i = first_added; i < n; ++i)
+  {
+    double nearest2 = std::numeric_limits<double>::infinity();
+    for(std::size_t j = 0; j < n; ++j)
+      if(j != i && normal[i] * normal[j] > 0) nearest2 = (std::min)(nearest2, CGAL::squared_distance(at[i], at[j]));
+    const double spacing = (std::max)(std::sqrt(nearest2), floor);
+    const std::size_t f = data.sites[i].face;
+    for(int k = 0; k < 3; ++k)
+      if(CGAL::squared_distance(mesh.corner(f, k), mesh.corner(f, (k + 1) % 3)) > CGAL::square(1.5 * spacing)) return true;
+  }
+  return false;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
@@ -259,6 +298,18 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
 ///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::stop_on_coarse_mesh}
+///     \cgalParamDescription{whether to return (with `mesh_too_coarse`) once an added site lies
+///       in a face with an edge longer than 1.5 times its distance to the nearest site whose
+///       face does not face away from its own (at least a sixteenth of the mean spacing): a
+///       metric sampled at vertices, such as
+///       `Geodesic_metric`, cannot tell such sites apart, and the sites added there would only
+///       pile up (a thin bar meshed with long needles). The caller refines the mesh for the
+///       sites (`refine_for_sites()` with `refinement_local_spacing`), builds the metric on it
+///       and calls again, the sites so far given.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the sites, how many were added, and the validity of their dual
@@ -280,6 +331,7 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
   const std::size_t max_added = choose_parameter(get_parameter(np, internal_np::maximum_number_of_added_sites),
                                                  (std::max)(std::size_t(64), given / 4));
   const std::size_t relax = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(3));
+  const bool stop_when_coarse = choose_parameter(get_parameter(np, internal_np::stop_on_coarse_mesh), false);
   // rounds beyond the budget's need: each adds at least one site
   const std::size_t max_rounds = 64;
 
@@ -293,6 +345,11 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     dual_triangulation(diagram, std::back_inserter(points), std::back_inserter(triangles));
     result.validity = validate_dual_triangulation(diagram, points, triangles);
     if(result.validity.is_valid() || result.sites_added >= max_added || result.rounds >= max_rounds) break;
+    if(stop_when_coarse && internal::added_sites_crowd_the_mesh(diagram, given))
+    {
+      result.mesh_too_coarse = true;
+      break;
+    }
 
     // the cells to cut: for each defect, its widest cell
     std::vector<Location> farthest;

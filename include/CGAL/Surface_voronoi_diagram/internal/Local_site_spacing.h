@@ -1,0 +1,124 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The site spacing near a point, for the refinement's local rule: the distance from the site
+// nearest to the point to that site's own nearest neighbour, or the point's distance to that
+// site if larger, kept within [1/16, 1] times the mean spacing (two sites at one point must not ask for edges of length zero, and evenly
+// spaced sites get the mean rule). A neighbour is a site whose face does not face away from
+// the site's own (positive dot product of the normals): across a thin wall the straight line
+// is short while the surface between the two sides is long, and counting such pairs refined
+// the whole of a propeller's blades (573k vertices for 3,160 sites).
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+/// the points of `sites` (face locations of `tm`), in doubles, and the normals of their faces
+/// (not normalized)
+template <class TriangleMesh, class LocationRange, class VertexPointMap>
+std::pair<std::vector<Point_d>, std::vector<Vector_d> >
+site_points_and_normals(const TriangleMesh& tm, const LocationRange& sites, const VertexPointMap& vpm)
+{
+  const auto dvpm = make_double_point_map(vpm);
+  std::pair<std::vector<Point_d>, std::vector<Vector_d> > out;
+  for(const auto& s : sites)
+  {
+    out.first.push_back(CGAL::Polygon_mesh_processing::construct_point(
+        s, tm, CGAL::parameters::vertex_point_map(dvpm).geom_traits(Double_kernel())));
+    const auto h = halfedge(s.first, tm);
+    const Point_d a = get(dvpm, source(h, tm)), b = get(dvpm, target(h, tm)), c = get(dvpm, target(next(h, tm), tm));
+    out.second.push_back(CGAL::cross_product(b - a, c - a));
+  }
+  return out;
+}
+
+class Local_site_spacing
+{
+  typedef CGAL::Search_traits_3<Double_kernel> Base;
+  typedef CGAL::Pointer_property_map<Point_d>::const_type Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef Search::Tree Tree;
+  typedef Search::Distance Distance;
+
+public:
+  /// With no points, every query gives `mean_spacing`.
+  Local_site_spacing(std::pair<std::vector<Point_d>, std::vector<Vector_d> > sites, double mean_spacing)
+    : m_points(std::move(sites.first)), m_mean(mean_spacing)
+  {
+    const std::vector<Vector_d>& normals = sites.second;
+    if(m_points.empty()) return;
+    const Point_map map = CGAL::make_property_map(static_cast<const std::vector<Point_d>&>(m_points));
+    m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(m_points.size()),
+                          Tree::Splitter(), Traits(map)));
+    m_tree->build();
+    m_spacing.assign(m_points.size(), m_mean);
+    for(std::size_t i = 0; i < m_points.size(); ++i)
+    {
+      // the nearest neighbour among the few nearest sites (beyond them, the mean spacing)
+      Search search(*m_tree, m_points[i], 8, 0, true, Distance(map));
+      double nearest = m_mean;
+      for(const auto& found : search)
+        if(found.first != i && normals[found.first] * normals[i] > 0)
+        {
+          nearest = (std::min)(nearest, std::sqrt(found.second));
+          break;   // the search gives them nearest first
+        }
+      m_spacing[i] = (std::max)(m_mean / 16, nearest);
+    }
+  }
+
+  /// the spacing of the site nearest to `x`, or the distance to it if larger (at most the
+  /// mean spacing): two close sites ask for short edges near them, not over all their cells
+  double operator()(const Point_d& x) const
+  {
+    if(!m_tree) return m_mean;
+    const Point_map map = CGAL::make_property_map(static_cast<const std::vector<Point_d>&>(m_points));
+    Search search(*m_tree, x, 1, 0, true, Distance(map));
+    const auto nearest = *search.begin();
+    return (std::min)(m_mean, (std::max)(m_spacing[nearest.first], std::sqrt(nearest.second)));
+  }
+
+private:
+  std::vector<Point_d> m_points;
+  double m_mean;
+  std::unique_ptr<Tree> m_tree;
+  std::vector<double> m_spacing;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
