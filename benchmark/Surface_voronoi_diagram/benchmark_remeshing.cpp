@@ -238,7 +238,7 @@ int main(int argc, char** argv)
   }
 
   std::cout << "# Remeshing by the dual (paper Table 1)\n\n" << n << " blue-noise sites, " << lloyd
-            << " Lloyd iterations" << (valid_dual ? ", then sites added until the dual is valid (add_sites_for_valid_dual)" : "")
+            << " Lloyd iterations" << (valid_dual ? ", then sites added until the dual is valid (add_sites_for_valid_dual; the geodesic metric: add_sites_for_valid_geodesic_dual, on meshes refined for the sites)" : "")
             << ", " << samples << " samples each way; distances / bounding-box diagonal\n\n";
   std::cout << "| model | vertices | method | sites | added | dual triangles | valid | genus (input) | self-intersections | Hausdorff | Chamfer | seconds |\n"
             << "| --- | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |\n";
