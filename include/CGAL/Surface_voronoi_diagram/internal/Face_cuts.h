@@ -39,7 +39,7 @@ class Face_cuts
   struct Face_record
   {
     std::uint32_t first_piece = 0;
-    std::uint16_t number_of_pieces = 0;
+    std::uint32_t number_of_pieces = 0;   // up to one per candidate, which are not bounded
     bool whole_face = false;
     bool degenerate = false;
   };
@@ -200,8 +200,7 @@ private:
       r.first_piece = std::uint32_t(pieces.size());
       r.whole_face = c.whole_face;
       r.degenerate = c.degenerate;
-      CGAL_assertion(c.pieces.size() <= 0xffff);
-      r.number_of_pieces = std::uint16_t(c.pieces.size());
+      r.number_of_pieces = std::uint32_t(c.pieces.size());
       for(const Symbolic_piece& p : c.pieces)
       {
         pieces.push_back(Piece_record{ p.candidate, std::uint32_t(vertices.size()), std::uint32_t(p.vertices.size()) });
