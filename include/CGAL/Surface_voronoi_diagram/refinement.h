@@ -341,11 +341,7 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
         best_b = b;
       }
     }
-    // rounding may leave a coordinate a few ulps below zero: clamp and renormalize
-    double sum = 0;
-    for(double& c : best_b) { c = (std::max)(c, 0.); sum += c; }
-    for(double& c : best_b) c /= sum;
-    r.sites.emplace_back(best, best_b);
+    r.sites.emplace_back(best, internal::clamped_barycentric(best_b));
   }
   return r;
 }

@@ -24,6 +24,7 @@
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Local_site_spacing.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -79,11 +80,7 @@ CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
 location_in_face(const Indexed_mesh<TriangleMesh>& mesh, std::size_t f, const Point_d& p)
 {
   const auto& t = mesh.triangles[f];
-  const Barycentric b = barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], p);
-  std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
-  const double sum = clamped[0] + clamped[1] + clamped[2];
-  for(double& w : clamped) w /= sum;
-  return { mesh.face_handles[f], clamped };
+  return { mesh.face_handles[f], clamped_barycentric(barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], p)) };
 }
 
 // Per site, the centroid of its piece farthest from it (Euclidean), as a location of the
@@ -242,12 +239,12 @@ bool added_sites_crowd_the_mesh(const Diagram& diagram, std::size_t first_added)
     at[i] = mesh.point_at(f, data.sites[i].barycentric);
     normal[i] = CGAL::cross_product(mesh.corner(f, 1) - mesh.corner(f, 0), mesh.corner(f, 2) - mesh.corner(f, 0));
   }
-  const double floor = std::sqrt(mesh.total_area / double(n)) / 16;
+  const double floor = Local_site_spacing::floor_ratio * std::sqrt(mesh.total_area / double(n));
   for(std::size_t i = first_added; i < n; ++i)
   {
     double nearest2 = std::numeric_limits<double>::infinity();
     for(std::size_t j = 0; j < n; ++j)
-      if(j != i && normal[i] * normal[j] > 0) nearest2 = (std::min)(nearest2, CGAL::squared_distance(at[i], at[j]));
+      if(j != i && Local_site_spacing::are_neighbours(normal[i], normal[j])) nearest2 = (std::min)(nearest2, CGAL::squared_distance(at[i], at[j]));
     const double spacing = (std::max)(std::sqrt(nearest2), floor);
     const std::size_t f = data.sites[i].face;
     for(int k = 0; k < 3; ++k)

@@ -31,7 +31,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
@@ -50,12 +49,8 @@ location_in_input_face(const TriangleMesh& tm, const VertexPointMap& vpm,
   const auto dvpm = make_double_point_map(vpm);
   const auto h = halfedge(f, tm);
   // corners in the order of Face_location's coordinates: source(h), target(h), target(next(h))
-  const Barycentric b = barycentric_coordinates(get(dvpm, source(h, tm)), get(dvpm, target(h, tm)),
-                                                get(dvpm, target(next(h, tm), tm)), p);
-  std::array<double, 3> clamped = {{ (std::max)(b[0], 0.), (std::max)(b[1], 0.), (std::max)(b[2], 0.) }};
-  const double sum = clamped[0] + clamped[1] + clamped[2];
-  for(double& w : clamped) w /= sum;
-  return { f, clamped };
+  return { f, clamped_barycentric(barycentric_coordinates(get(dvpm, source(h, tm)), get(dvpm, target(h, tm)),
+                                                         get(dvpm, target(next(h, tm), tm)), p)) };
 }
 
 // f(chain), with the site weights of np added if np has them

@@ -27,6 +27,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -101,6 +102,16 @@ inline bool is_needle(const Point_d& p0, const Point_d& p1, const Point_d& p2)
   const double d00 = v0 * v0, d01 = v0 * v1, d11 = v1 * v1;
   const double gram = d00 * d11 - d01 * d01;
   return !(gram > needle_gram_ratio * (d00 * d11) && std::isfinite(gram));
+}
+
+/// `b` clamped to the triangle and normalized: rounding may leave a coordinate of a point on
+/// (or just beside) a face a few ulps below zero, and a location must not step outside it.
+inline Barycentric clamped_barycentric(Barycentric b)
+{
+  double sum = 0;
+  for(double& c : b) { c = (std::max)(c, 0.); sum += c; }
+  for(double& c : b) c /= sum;
+  return b;
 }
 
 /// barycentric coordinates of `x` in triangle (p0, p1, p2), of its projection on the

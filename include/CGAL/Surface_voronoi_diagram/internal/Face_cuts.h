@@ -157,7 +157,7 @@ public:
     for(Buffer& b : buffers)
     {
       append(b);
-      Buffer().swap(b);
+      b = Buffer();   // freed as soon as copied
     }
   }
 
@@ -184,14 +184,6 @@ private:
       pieces.clear();
       vertices.clear();
       supports.clear();
-    }
-
-    void swap(Buffer& o)
-    {
-      faces.swap(o.faces);
-      pieces.swap(o.pieces);
-      vertices.swap(o.vertices);
-      supports.swap(o.supports);
     }
 
     void add(std::size_t f, const Face_cut& c)

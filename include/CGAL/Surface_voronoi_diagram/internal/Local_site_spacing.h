@@ -73,6 +73,13 @@ class Local_site_spacing
   typedef Search::Distance Distance;
 
 public:
+  /// the smallest spacing, as a fraction of the mean one
+  static constexpr double floor_ratio = 1. / 16;
+
+  /// whether two sites whose faces have these normals are neighbours: their faces do not face
+  /// away from each other (as the two sides of a thin wall do)
+  static bool are_neighbours(const Vector_d& normal_a, const Vector_d& normal_b) { return normal_a * normal_b > 0; }
+
   /// With no points, every query gives `mean_spacing`.
   Local_site_spacing(std::pair<std::vector<Point_d>, std::vector<Vector_d> > sites, double mean_spacing)
     : m_points(std::move(sites.first)), m_mean(mean_spacing)
@@ -90,12 +97,12 @@ public:
       Search search(*m_tree, m_points[i], 8, 0, true, Distance(map));
       double nearest = m_mean;
       for(const auto& found : search)
-        if(found.first != i && normals[found.first] * normals[i] > 0)
+        if(found.first != i && are_neighbours(normals[found.first], normals[i]))
         {
           nearest = (std::min)(nearest, std::sqrt(found.second));
           break;   // the search gives them nearest first
         }
-      m_spacing[i] = (std::max)(m_mean / 16, nearest);
+      m_spacing[i] = (std::max)(floor_ratio * m_mean, nearest);
     }
   }
 
