@@ -162,6 +162,29 @@ TEST_CASE("geodesic metric: deterministic, and independent of the order of queri
   CHECK(differ == 0);
 }
 
+TEST_CASE("geodesic metric: distances asked again after forget_distances() are the same", "[geodesic]")
+{
+  Mesh m;
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 2000;
+  GEN::make_thin_lampshade(m, lo);
+  const auto sites = area_uniform_locations(m, 40, 3);
+  Geodesic g(m);
+  const Geodesic_diagram vd(m, g, sites);   // which frees the fronts after its propagation
+  CHECK(vd.number_of_sites() == sites.size());
+  std::vector<Mesh::Vertex_index> vs(vertices(m).begin(), vertices(m).end());
+  std::vector<double> first;
+  for(std::size_t k = 0; k < vs.size(); k += 11)
+    for(std::size_t i = 0; i < sites.size(); i += 3) first.push_back(g.squared_distance(i, vs[k]));
+  const std::size_t work = g.number_of_computed_distances();
+  g.forget_distances();
+  std::vector<double> again;
+  for(std::size_t k = 0; k < vs.size(); k += 11)
+    for(std::size_t i = 0; i < sites.size(); i += 3) again.push_back(g.squared_distance(i, vs[k]));
+  CHECK(again == first);
+  CHECK(g.number_of_computed_distances() > work);   // marched again, not kept
+}
+
 TEST_CASE("geodesic metric: clear errors", "[geodesic][errors]")
 {
   Mesh m;

@@ -670,3 +670,58 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
   CHECK(with_broken >= 2);
   CHECK(partial >= 40);
 }
+
+// The diagram frees the propagation's working state (links, offers) before stitching, and a
+// repair after stitching builds it again from the candidates: the repair must then admit
+// exactly the fields it admits with the state kept, round after round, on the folded grids.
+TEST_CASE("propagation: a repair after the working state was freed admits what the kept state admits", "[stitcher][repair]")
+{
+  int rounds_compared = 0, rounds_admitting = 0;
+  for(int trial = 0; trial < 80; ++trial)
+  {
+    INFO("trial " << trial);
+    std::mt19937 rng_kept(100 + trial), rng_freed(100 + trial);
+    Folded_grid_propagation kept(1.5 + 0.05 * trial, 8 + trial % 20, rng_kept);
+    Folded_grid_propagation freed(1.5 + 0.05 * trial, 8 + trial % 20, rng_freed);
+    St_run& r = kept.r;
+    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, kept.propagation->candidates, r.cuts);
+    SVI::Banned_fields banned(r.mesh.number_of_faces());
+    auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
+    std::size_t broken = 0;
+    std::vector<std::pair<std::size_t, std::size_t> > orphans;
+    if(!check.run(kept.located, folded_grid_blocked_edge, broken, orphans, nullptr, nullptr)) continue;
+    for(int round = 1; round <= 6 && broken > 0; ++round)
+    {
+      INFO("round " << round);
+      std::vector<std::size_t> dirty, touched_kept, touched_freed;
+      for(const auto& x : orphans)
+      {
+        banned.insert(x.first, x.second);
+        if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
+      }
+      const std::size_t admitted_before = kept.propagation->statistics.admitted;
+      kept.propagation->repropagate(dirty, is_banned, touched_kept);
+      freed.propagation->release_working_state();
+      freed.propagation->repropagate(dirty, is_banned, touched_freed);
+      ++rounds_compared;
+      CHECK(touched_freed == touched_kept);
+      bool same = true;
+      for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+      {
+        const SVI::Candidate_list& a = kept.propagation->candidates[f];
+        const SVI::Candidate_list& b = freed.propagation->candidates[f];
+        same = same && a.size() == b.size();
+        for(std::size_t j = 0; same && j < a.size(); ++j)
+          same = a[j].site == b[j].site && a[j].from_edge == b[j].from_edge && a[j].value == b[j].value;
+      }
+      CHECK(same);
+      CHECK(freed.propagation->statistics.admitted == kept.propagation->statistics.admitted);
+      rounds_admitting += (kept.propagation->statistics.admitted > admitted_before);
+      cut_listed_faces(kept.propagation->candidates, touched_kept, r.cuts);
+      if(!check.run(kept.located, folded_grid_blocked_edge, broken, orphans, nullptr, nullptr)) break;
+    }
+  }
+  // the repairs must run, and admit fields again (the offers rebuilt decide those)
+  CHECK(rounds_compared >= 40);
+  CHECK(rounds_admitting >= 20);
+}

@@ -830,6 +830,7 @@ int run_main(int argc, char** argv)
           work = &refined;
           work_sites = r.sites;
           carry_breaklines(refined, refined_input_face);
+          mesh = Mesh();   // not read again: at igea-2M its 350 MB go to the diagram
           std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << r.edges_split
                     << " edges split, " << num_vertices(refined) << " vertices; --no-refine to keep it)" << std::endl;
         }

@@ -175,6 +175,15 @@ public:
     return m_marching->distance_at(i, static_cast<std::uint32_t>(f), { l.second[0], l.second[1], l.second[2] });
   }
 
+  /// Frees the distances computed so far, whose memory grows with the area the fronts
+  /// covered (about a hundred bytes per vertex and per site reaching it). A distance asked
+  /// afterwards is marched again from its site, to the same value. A diagram calls it once
+  /// its propagation is done, before it cuts and stitches the faces.
+  void forget_distances()
+  {
+    if(m_marching) m_marching->forget_fronts();
+  }
+
   /// the number of (site, vertex) distances computed since the last `set_sites()`: the work
   /// done, a small multiple of the number of vertices when the sites are spread out
   std::size_t number_of_computed_distances() const

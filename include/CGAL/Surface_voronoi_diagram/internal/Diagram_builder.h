@@ -83,6 +83,7 @@ public:
       find_global_nearest(propagation.candidates);
     else
       propagation.run();
+    m_fields.propagation_done();
     m_timer.stop("propagation");
     if(!progress(0.4)) return false;
 
@@ -159,6 +160,7 @@ public:
       m_timer.stop("cutting");
       return progress(1.);
     }
+    propagation.release_working_state();   // a repair after stitching builds it again
     stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
     m_timer.stop("cutting");
 

@@ -53,10 +53,10 @@ public:
 
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
               const Blocked& blocked)
-    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces),
+    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked),
       m_epoch(mesh.number_of_faces(), 0), m_offers(mesh.number_of_faces())
   {
-    link_faces(blocked);
+    link_faces();
   }
 
   Candidate_lists candidates;
@@ -75,6 +75,18 @@ public:
     for(Candidate_list& list : candidates) clean_candidate_list(list);
   }
 
+  /// Frees what a repair's propagation reads besides the candidates (the faces' links and
+  /// what was offered to them: tens of bytes per face), for the stages that do not need it;
+  /// `repropagate()` builds it again.
+  void release_working_state()
+  {
+    std::vector<Face_link>().swap(m_links);
+    std::vector<std::uint32_t>().swap(m_epoch);
+    std::vector<Offers>().swap(m_offers);
+    m_offered = Flat_hash_table<Key_slot<std::uint64_t> >();
+    m_released = true;
+  }
+
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
   /// `dirty` faces, whose lists are then refilled from their neighbours' candidates, and the
   /// propagation goes on from there. `touched` receives every face whose list changed, and
@@ -83,6 +95,7 @@ public:
   void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched,
                    std::vector<std::uint32_t>* sites_before = nullptr)
   {
+    if(m_released) restore_working_state();
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     m_sites_before = sites_before;
     for(std::size_t f : dirty)
@@ -186,7 +199,23 @@ private:
   };
   static constexpr std::uint32_t no_link = std::uint32_t(-1);
 
-  void link_faces(const Blocked& blocked)
+  // What was offered to a face and is not among its candidates was dominated by them, and
+  // stays dominated while the face is not repaired (its list only grows, and dominance is
+  // transitive): marking the candidates alone as offered lets the repair admit exactly the
+  // fields the kept state would have.
+  void restore_working_state()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    link_faces();
+    m_epoch.assign(nf, 0);
+    m_offers.assign(nf, Offers());
+    m_offered.reset(nf / 8 + 16);
+    for(std::size_t f = 0; f < nf; ++f)
+      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
+    m_released = false;
+  }
+
+  void link_faces()
   {
     const std::size_t nf = m_mesh.number_of_faces();
     m_links.resize(nf);
@@ -198,7 +227,7 @@ private:
         l.neighbor[k] = no_link;
         l.fresh_vertex[k] = 0;
         l.shared_corners[k] = 0;
-        if(g == Mesh::none || blocked(f, k)) continue;
+        if(g == Mesh::none || m_blocked(f, k)) continue;
         const int a = m_mesh.corner_of(g, m_mesh.triangles[f][k]), b = m_mesh.corner_of(g, m_mesh.triangles[f][(k + 1) % 3]);
         CGAL_assertion(a >= 0 && a < 3 && b >= 0 && b < 3 && a != b);
         l.neighbor[k] = static_cast<std::uint32_t>(g);
@@ -305,6 +334,18 @@ private:
       for(int k = 0; k < 3; ++k)
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(x, e.face, k);
     }
+    release_queue();
+  }
+
+  // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
+  // of faces) and would be held through cutting and stitching: a repair's propagation is
+  // local and grows its own.
+  void release_queue()
+  {
+    CGAL_assertion(m_queue.empty());
+    m_queue = decltype(m_queue)();
+    std::vector<std::array<double, 3> >().swap(m_values);
+    std::vector<std::uint32_t>().swap(m_free_slots);
   }
 
   // a hint to the processor, which changes nothing else
@@ -320,6 +361,8 @@ private:
   const Mesh& m_mesh;
   const Fields& m_fields;
   const std::vector<std::size_t>& m_site_faces;
+  Blocked m_blocked;
+  bool m_released = false;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;

@@ -45,6 +45,14 @@ template <class Metric>
 struct Has_indexed_squared_distance<Metric, decltype(void(std::declval<Metric&>().indexed_squared_distance(std::size_t(0), std::size_t(0))))>
   : std::true_type {};
 
+// Whether a lazy metric can free the distances it computed (`forget_distances()`), which a
+// diagram no longer needs once its propagation is done.
+template <class Metric, class = void>
+struct Has_forget_distances : std::false_type {};
+template <class Metric>
+struct Has_forget_distances<Metric, decltype(void(std::declval<Metric&>().forget_distances()))>
+  : std::true_type {};
+
 // Whether a metric keeps an `Indexed_mesh` of its mesh that the diagram may share.
 template <class Metric, class = void>
 struct Has_indexed_mesh : std::false_type {};
@@ -97,6 +105,9 @@ public:
     return d - m_weights[site];
   }
 
+  /// the coordinates stay: the cells' measures read them
+  void propagation_done() const {}
+
   std::size_t dimension() const { return m_dimension; }
   const double* site_coordinates(std::size_t i) const { return &m_site_coordinates[i * m_dimension]; }
   const double* vertex_coordinates(std::size_t v) const { return &m_vertex_coordinates[v * m_dimension]; }
@@ -128,6 +139,10 @@ public:
     m_metric.set_sites(locations);
   }
 
+  /// the propagation has asked for every value it needed: what the metric keeps of them
+  /// may go (a repair asks again, and gets the same values)
+  void propagation_done() const { forget_distances(Has_forget_distances<Metric>()); }
+
   double value(std::size_t site, std::size_t vertex) const
   {
     const double d = squared_distance(site, vertex, Has_indexed_squared_distance<Metric>());
@@ -137,6 +152,9 @@ public:
   }
 
 private:
+  void forget_distances(std::true_type) const { m_metric.forget_distances(); }
+  void forget_distances(std::false_type) const {}
+
   double squared_distance(std::size_t site, std::size_t vertex, std::true_type) const
   {
     return m_metric.indexed_squared_distance(site, vertex);

@@ -10,9 +10,9 @@
 // Author(s) : The Surface_voronoi_diagram authors
 //
 // The mesh as fast marching needs it, on top of the shared `Indexed_mesh` (no copy of its
-// points or triangles): the faces around each vertex and, for each corner with an obtuse
-// angle, a vertex unfolded from the faces beyond the opposite edge that splits the corner
-// into two acute virtual triangles (Kimmel and Sethian's remedy).
+// points or triangles): each face's edge lengths, the face corners around each vertex and,
+// for each corner with an obtuse angle, a vertex unfolded from the faces beyond the opposite
+// edge that splits the corner into two acute virtual triangles (Kimmel and Sethian's remedy).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FAST_MARCHING_FAST_MARCHING_MESH_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FAST_MARCHING_FAST_MARCHING_MESH_H
@@ -22,6 +22,8 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Fast_marching/point_source_update.h>
+
+#include <CGAL/assertions.h>
 
 #include <array>
 #include <cmath>
@@ -47,25 +49,28 @@ public:
     Point_2d a, b, d;
   };
 
-  /// One face around a vertex a, as the update from a needs it: the two other corners
-  /// (next and previous in the face's order), the three side lengths, and the split of
-  /// each of the two other corners if it is obtuse. Kept together so that an update reads
-  /// one contiguous record instead of three arrays indexed by face.
-  struct Ring_face
+  /// What an update reads of a face besides its corners: the lengths of its local edges
+  /// (edge k joins corners k and k+1) and the split of each obtuse corner. A face's record
+  /// is shared by the rings of its three corners, which keeps the rings at 4 bytes per corner.
+  struct Face_record
   {
-    std::uint32_t next, prev;
-    std::uint32_t split_next = none, split_prev = none;   // into `splits`
-    double a_next, a_prev, opposite;
+    std::array<double, 3> edge_length;
+    std::array<std::uint32_t, 3> split;   // into `splits`, or `none`
   };
 
-  /// \pre the mesh has fewer than 2^32 - 1 vertices and faces
+  /// \pre the mesh has fewer than 2^32 - 1 vertices and fewer than (2^32 - 1) / 3 faces
   explicit Fast_marching_mesh(const Mesh& mesh) : m_mesh(mesh) { build(); }
 
   const Mesh& mesh() const { return m_mesh; }
   std::uint32_t vertex(std::size_t f, int k) const { return static_cast<std::uint32_t>(m_mesh.triangles[f][k]); }
 
+  /// the corner `3 f + k` of face `f` (corner k) is a corner of the face around its vertex
+  static std::uint32_t face_of_corner(std::uint32_t c) { return c / 3; }
+  static int local_corner(std::uint32_t c) { return int(c % 3); }
+
+  std::vector<Face_record> faces;
   std::vector<std::uint32_t> ring_offsets;                  // CSR into `ring`
-  std::vector<Ring_face> ring;
+  std::vector<std::uint32_t> ring;                          // the corners at each vertex
   std::vector<Split> splits;
   std::vector<std::uint32_t> vertex_split_offsets, vertex_splits; // splits whose d is the vertex (CSR)
 
@@ -75,43 +80,35 @@ private:
   void build()
   {
     const std::size_t n = m_mesh.number_of_vertices(), m = m_mesh.number_of_faces();
-    std::vector<std::array<double, 3> > edge_lengths(m);   // per face, of local edge k (corners k, k+1)
+    CGAL_precondition(m < std::size_t(none) / 3);
+    faces.resize(m);
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
-        edge_lengths[f][k] = distance(m_mesh.corner(f, k), m_mesh.corner(f, (k + 1) % 3));
-    ring_offsets.assign(n + 1, 0);
-    for(const auto& t : m_mesh.triangles)
-      for(std::size_t v : t) ++ring_offsets[v + 1];
-    for(std::size_t v = 0; v < n; ++v) ring_offsets[v + 1] += ring_offsets[v];
+      {
+        faces[f].edge_length[k] = distance(m_mesh.corner(f, k), m_mesh.corner(f, (k + 1) % 3));
+        faces[f].split[k] = none;
+      }
     splits.clear();
-    std::vector<std::array<std::uint32_t, 3> > split_of(m, std::array<std::uint32_t, 3>{{ none, none, none }});
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
       {
         Split s;
         if(find_split(f, k, s))
         {
-          split_of[f][k] = static_cast<std::uint32_t>(splits.size());
+          faces[f].split[k] = static_cast<std::uint32_t>(splits.size());
           splits.push_back(s);
         }
       }
 
+    ring_offsets.assign(n + 1, 0);
+    for(const auto& t : m_mesh.triangles)
+      for(std::size_t v : t) ++ring_offsets[v + 1];
+    for(std::size_t v = 0; v < n; ++v) ring_offsets[v + 1] += ring_offsets[v];
     ring.resize(ring_offsets[n]);
     std::vector<std::uint32_t> fill(ring_offsets.begin(), ring_offsets.end() - 1);
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
-      {
-        const int kn = (k + 1) % 3, kp = (k + 2) % 3;
-        Ring_face r;
-        r.next = vertex(f, kn);
-        r.prev = vertex(f, kp);
-        r.split_next = split_of[f][kn];
-        r.split_prev = split_of[f][kp];
-        r.a_next = edge_lengths[f][k];     // local edge k joins corners k and k+1
-        r.a_prev = edge_lengths[f][kp];
-        r.opposite = edge_lengths[f][kn];
-        ring[fill[vertex(f, k)]++] = r;
-      }
+        ring[fill[vertex(f, k)]++] = static_cast<std::uint32_t>(3 * f + k);
     vertex_split_offsets.assign(n + 1, 0);
     for(const Split& s : splits) ++vertex_split_offsets[s.vertex + 1];
     for(std::size_t v = 0; v < n; ++v) vertex_split_offsets[v + 1] += vertex_split_offsets[v];

@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -66,15 +67,19 @@ public:
 
   std::size_t number_of_seeds() const { return m_seeds.size(); }
 
+  /// Frees every front. A later query marches its site's front again from the seed, which
+  /// gives the same values: a front's sequence of accepted vertices is fixed by the mesh.
+  void forget_fronts() { std::vector<Front>(m_seeds.size()).swap(m_fronts); }
+
   /// the geodesic distance from site `i` to vertex `v`; +infinity if `v` cannot be reached
   double distance(std::size_t i, std::uint32_t v)
   {
     Front& front = m_fronts[i];
     if(const Slot* s = front.values.find(v))
-      if(s->accepted) return s->value;
+      if(s->accepted()) return s->value();
     if(!front.started) start(i);
     while(!front.heap.empty())
-      if(pop(i) == v) return front.values.find(v)->value;
+      if(pop(i) == v) return front.values.find(v)->value();
     return std::numeric_limits<double>::infinity();
   }
 
@@ -106,12 +111,22 @@ public:
   std::size_t accepted_vertices = 0;   // work done so far, for the statistics
 
 private:
+  // A vertex's value in a front, 12 bytes where a bool beside a double would take 16: the
+  // double is kept in two 4-byte words, and negated once the vertex is accepted (values are
+  // never negative; the sign bit of 0 is kept as well).
   struct Slot
   {
     std::uint32_t key;      // the vertex
-    bool accepted;
-    double value;
+    std::uint32_t bits[2];
+
+    double stored() const { double v; std::memcpy(&v, bits, sizeof v); return v; }
+    void store(double v) { std::memcpy(bits, &v, sizeof v); }
+    bool accepted() const { return std::signbit(stored()); }
+    double value() const { return std::fabs(stored()); }
+    void set_tentative(double v) { store(v); }
+    void accept() { store(-value()); }
   };
+  static_assert(sizeof(double) == 2 * sizeof(std::uint32_t), "a double is kept in two 32-bit words");
   struct Heap_item
   {
     double value;
@@ -133,21 +148,24 @@ private:
 
     Slot& find_or_insert(std::uint32_t v)
     {
-      return *values.insert(v, Slot{ v, false, std::numeric_limits<double>::infinity() }).first;
+      Slot fresh;
+      fresh.key = v;
+      fresh.set_tentative(std::numeric_limits<double>::infinity());
+      return *values.insert(v, fresh).first;
     }
   };
 
   void propose(Front& front, std::uint32_t v, double value)
   {
     Slot& s = front.find_or_insert(v);
-    if(!s.accepted) lower(front, s, value);
+    if(!s.accepted()) lower(front, s, value);
   }
 
   // lowers the tentative value of a vertex not accepted yet, and queues it
   static void lower(Front& front, Slot& s, double value)
   {
-    if(!(value < s.value)) return;
-    s.value = value;
+    if(!(value < s.value())) return;
+    s.set_tentative(value);
     front.heap.push_back(Heap_item{ value, s.key });
     std::push_heap(front.heap.begin(), front.heap.end());
   }
@@ -173,8 +191,8 @@ private:
       const Heap_item top = front.heap.back();
       front.heap.pop_back();
       Slot& s = front.find_or_insert(top.vertex);
-      if(s.accepted || top.value != s.value) continue;   // a stale copy
-      s.accepted = true;
+      if(s.accepted() || top.value != s.value()) continue;   // a stale copy
+      s.accept();
       ++accepted_vertices;
       update_around(front, top.vertex, top.value);
       return top.vertex;
@@ -185,12 +203,12 @@ private:
   static double accepted_value(const Front& front, std::uint32_t v)
   {
     const Slot* s = front.values.find(v);
-    return (s && s->accepted) ? s->value : std::numeric_limits<double>::quiet_NaN();
+    return (s && s->accepted()) ? s->value() : std::numeric_limits<double>::quiet_NaN();
   }
   static bool is_accepted(const Front& front, std::uint32_t v)
   {
     const Slot* s = front.values.find(v);
-    return s && s->accepted;
+    return s && s->accepted();
   }
 
   void update_around(Front& front, std::uint32_t a, double da)
@@ -201,11 +219,16 @@ private:
     front.values.reserve_more(2 * std::size_t(end - begin));
     for(std::uint32_t r = begin; r < end; ++r)
     {
-      const typename Marching_mesh::Ring_face& rf = m_marching.ring[r];
-      Slot& next = front.find_or_insert(rf.next);
-      Slot& prev = front.find_or_insert(rf.prev);
-      update_corner(front, da, next, prev, rf.a_next, rf.a_prev, rf.opposite, rf.split_next);
-      update_corner(front, da, prev, next, rf.a_prev, rf.a_next, rf.opposite, rf.split_prev);
+      const std::uint32_t corner = m_marching.ring[r];
+      const std::uint32_t f = Marching_mesh::face_of_corner(corner);
+      const int k = Marching_mesh::local_corner(corner), kn = (k + 1) % 3, kp = (k + 2) % 3;
+      const typename Marching_mesh::Face_record& rf = m_marching.faces[f];
+      // local edge k joins a to next, kp joins prev to a, kn is opposite a
+      const double a_next = rf.edge_length[k], a_prev = rf.edge_length[kp], opposite = rf.edge_length[kn];
+      Slot& next = front.find_or_insert(m_marching.vertex(f, kn));
+      Slot& prev = front.find_or_insert(m_marching.vertex(f, kp));
+      update_corner(front, da, next, prev, a_next, a_prev, opposite, rf.split[kn]);
+      update_corner(front, da, prev, next, a_prev, a_next, opposite, rf.split[kp]);
     }
     // `a` may be the split vertex of obtuse corners elsewhere
     for(std::uint32_t r = m_marching.vertex_split_offsets[a]; r < m_marching.vertex_split_offsets[a + 1]; ++r)
@@ -219,9 +242,9 @@ private:
   // updates corner c of a face (a, b, c) from a, just accepted with value da
   void update_corner(Front& front, double da, Slot& c, const Slot& b, double ac, double ab, double bc, std::uint32_t split)
   {
-    if(c.accepted) return;
+    if(c.accepted()) return;
     double best = da + ac;
-    if(b.accepted) best = (std::min)(best, point_source_update(ab, ac, bc, da, b.value));
+    if(b.accepted()) best = (std::min)(best, point_source_update(ab, ac, bc, da, b.value()));
     if(split != Marching_mesh::none) best = (std::min)(best, split_update(front, m_marching.splits[split]));
     lower(front, c, best);
   }

@@ -66,6 +66,7 @@ public:
     name_vertices();
     place_vertices();
     weld_exact_ties();
+    release_naming();
     insert_edge_points();
     weld_coincident_positions();
     drop_collinear_pieces();
@@ -366,6 +367,17 @@ private:
     out.rebuild_face_begin(nf);
   }
 
+  // The keys and their lookup tables are not read after the exact ties are welded; the
+  // partition's own vertices and pieces grow from here on.
+  void release_naming()
+  {
+    std::vector<Origin>().swap(m_origins);
+    std::vector<std::size_t>().swap(m_corner_id);
+    std::vector<Edge_crossing_entry>().swap(m_edge_crossings);
+    std::vector<std::size_t>().swap(m_edge_crossings_begin);
+    std::vector<std::uint8_t>().swap(m_face_degenerate);
+  }
+
   // Step 4: every vertex on a mesh edge goes into the piece edges that run along that edge.
   void insert_edge_points()
   {
@@ -374,14 +386,15 @@ private:
     // counting sort (a global sort and a binary search per piece edge were 13% of a Lloyd step)
     struct Edge_point { double t; std::size_t id; };
     const std::size_t ne = m_mesh.number_of_edges();
-    std::vector<std::size_t> edge_begin(ne + 1, 0);
+    CGAL_precondition(out.vertices.size() < std::size_t(std::uint32_t(-1)));
+    std::vector<std::uint32_t> edge_begin(ne + 1, 0);
     for(std::size_t id = 0; id < out.vertices.size(); ++id)
       if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
         ++edge_begin[out.vertices[id].element + 1];
     for(std::size_t e = 0; e < ne; ++e) edge_begin[e + 1] += edge_begin[e];
     std::vector<Edge_point> edge_points(edge_begin[ne]);
     {
-      std::vector<std::size_t> next(edge_begin.begin(), edge_begin.end() - 1);
+      std::vector<std::uint32_t> next(edge_begin.begin(), edge_begin.end() - 1);
       for(std::size_t id = 0; id < out.vertices.size(); ++id)
         if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
           edge_points[next[out.vertices[id].element]++] = Edge_point{ out.vertices[id].t, id };
