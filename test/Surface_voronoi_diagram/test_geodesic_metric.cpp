@@ -165,9 +165,7 @@ TEST_CASE("geodesic metric: deterministic, and independent of the order of queri
 TEST_CASE("geodesic metric: distances asked again after forget_distances() are the same", "[geodesic]")
 {
   Mesh m;
-  GEN::Lampshade_options lo;
-  lo.target_vertices = 2000;
-  GEN::make_thin_lampshade(m, lo);
+  GEN::make_torus(m, 1.0, 0.35, 60, 24);
   const auto sites = area_uniform_locations(m, 40, 3);
   Geodesic g(m);
   const Geodesic_diagram vd(m, g, sites);   // which frees the fronts after its propagation
