@@ -53,8 +53,7 @@ public:
 
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
               const Blocked& blocked)
-    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked),
-      m_epoch(mesh.number_of_faces(), 0), m_offers(mesh.number_of_faces())
+    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked)
   {
     link_faces();
   }
@@ -66,8 +65,7 @@ public:
   void run()
   {
     candidates.assign(m_mesh.number_of_faces(), Candidate_list());
-    m_offers.assign(m_mesh.number_of_faces(), Offers());
-    m_offered.reset(m_mesh.number_of_faces() / 8 + 16);
+    forget_offers();
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
@@ -84,7 +82,6 @@ public:
     std::vector<std::uint32_t>().swap(m_epoch);
     std::vector<Offers>().swap(m_offers);
     m_offered = Flat_hash_table<Key_slot<std::uint64_t> >();
-    m_released = true;
   }
 
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
@@ -95,7 +92,7 @@ public:
   void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched,
                    std::vector<std::uint32_t>* sites_before = nullptr)
   {
-    if(m_released) restore_working_state();
+    if(m_links.size() != m_mesh.number_of_faces()) restore_working_state();   // released
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     m_sites_before = sites_before;
     for(std::size_t f : dirty)
@@ -205,14 +202,19 @@ private:
   // fields the kept state would have.
   void restore_working_state()
   {
-    const std::size_t nf = m_mesh.number_of_faces();
     link_faces();
+    forget_offers();
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
+  }
+
+  // every face in epoch 0, nothing offered to it
+  void forget_offers()
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
     m_epoch.assign(nf, 0);
     m_offers.assign(nf, Offers());
     m_offered.reset(nf / 8 + 16);
-    for(std::size_t f = 0; f < nf; ++f)
-      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
-    m_released = false;
   }
 
   void link_faces()
@@ -362,7 +364,6 @@ private:
   const Fields& m_fields;
   const std::vector<std::size_t>& m_site_faces;
   Blocked m_blocked;
-  bool m_released = false;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;
