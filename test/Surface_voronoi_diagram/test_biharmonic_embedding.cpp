@@ -5,6 +5,7 @@
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Dense>
@@ -276,6 +277,40 @@ TEST_CASE("embedding: the nested-dissection ordering is a permutation with less 
   Ordering()(C, small);
   Eigen::AMDOrdering<int>()(C, reference);
   CHECK(small.indices() == reference.indices());
+}
+#endif
+
+#ifdef CGAL_USE_METIS
+TEST_CASE("embedding: above the nested-dissection size the supernodal eigen-solve agrees with the simplicial one", "[embedding][numerics]")
+{
+  // From Nested_dissection_ordering::smallest_size rows up the default path renumbers the
+  // problem and factorizes it with the supernodal Cholesky; the reference solves the same
+  // matrices with Eigen's simplicial LLT in AMD order. A bent torus: simple eigenvalues.
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 400, 256);
+  for(auto v : vertices(m))
+  {
+    const Point p = m.point(v);
+    m.point(v) = Point(p.x() * (1 + 0.3 * p.z()), 1.1 * p.y() + 0.1 * p.x() * p.x(), p.z());
+  }
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  REQUIRE(L.rows() >= SV::internal::Nested_dissection_ordering<int>::smallest_size);
+  const Eigen::Index nev = 8;
+  const SV::internal::Eigen_solve_result fast = SV::internal::smallest_generalized_eigenpairs(L, M, nev);
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > > Reference_LA;
+  const SV::internal::Eigen_solve_result reference = SV::internal::smallest_generalized_eigenpairs_in_order<Reference_LA>(L, M, nev, 1e-10, 1000, std::function<bool()>());
+  REQUIRE(fast.eigenvalues.size() == nev);
+  REQUIRE(reference.eigenvalues.size() == nev);
+  for(Eigen::Index k = 1; k < nev; ++k)
+  {
+    CHECK(fast.eigenvalues[k] == Approx(reference.eigenvalues[k]).epsilon(1e-9));
+    if(k + 1 < nev)
+      REQUIRE(reference.eigenvalues[k + 1] > reference.eigenvalues[k] * (1 + 1e-3));
+    // the same eigenvector up to its sign, in the original numbering
+    const double overlap = std::abs(fast.eigenvectors.col(k).dot(M * reference.eigenvectors.col(k)));
+    CHECK(overlap == Approx(1.0).epsilon(1e-8));
+  }
 }
 #endif
 

@@ -1,0 +1,516 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// A supernodal (multifrontal) sparse Cholesky factorization A = L L^T, in the order the
+// matrix comes in, for the eigen-solver's shift-invert on large meshes.
+//
+// Why not Eigen's SimplicialLLT: it updates the factor one column at a time through scattered
+// sparse loops (at 537k vertices the factorization alone took 4 s, a third of the
+// embedding). Here columns with the same structure below the diagonal are grouped into
+// supernodes, each factorized as one dense block with Eigen's dense kernels, which run
+// several times faster. Why not CHOLMOD's supernodal code: it goes through the BLAS, whose
+// rounding depends on the BLAS build and thread count (see nested_dissection_ordering.h);
+// Eigen's dense kernels are this package's own compiled code, single-threaded, so the
+// factor is the same bits on every run.
+//
+// The factor's values are stored per supernode as one dense column-major block (its rows:
+// its own columns, then the rows below), 8 bytes per entry instead of the 12 of a
+// compressed column, which the solves, bound by memory bandwidth, read twice per operator
+// application.
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_SUPERNODAL_CHOLESKY_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_SUPERNODAL_CHOLESKY_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/assertions.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+class Supernodal_cholesky
+{
+public:
+  typedef Eigen::SparseMatrix<double> Sparse_matrix;
+
+  /// The elimination tree of the lower triangle of `A` (column-major, the diagonal and
+  /// either or both triangles stored): `parent[j]` is the parent of column j, -1 at a root.
+  static std::vector<int> elimination_tree(const Sparse_matrix& A)
+  {
+    const Sparse_matrix upper = upper_pattern(A);
+    return elimination_tree_of_upper(upper);
+  }
+
+  /// A postorder of the forest `parent`: `order[k]` is the k-th column visited, children in
+  /// increasing order before their parent. Renumbering a matrix by it leaves its factor's
+  /// non-zeros as they are and makes the columns of every subtree consecutive.
+  static std::vector<int> postorder(const std::vector<int>& parent)
+  {
+    const int n = static_cast<int>(parent.size());
+    std::vector<int> head(static_cast<std::size_t>(n), -1), next(static_cast<std::size_t>(n), -1), order, stack;
+    order.reserve(parent.size());
+    for(int j = n - 1; j >= 0; --j)   // children lists in increasing order
+      if(parent[j] >= 0)
+      {
+        next[j] = head[parent[j]];
+        head[parent[j]] = j;
+      }
+    for(int root = 0; root < n; ++root)
+    {
+      if(parent[root] >= 0)
+        continue;
+      stack.push_back(root);
+      while(!stack.empty())
+      {
+        const int j = stack.back();
+        const int child = head[j];
+        if(child < 0)
+        {
+          stack.pop_back();
+          order.push_back(j);
+        }
+        else
+        {
+          head[j] = next[child];
+          stack.push_back(child);
+        }
+      }
+    }
+    return order;
+  }
+
+  /// Factorizes the symmetric matrix whose lower triangle `A` holds (the upper triangle, if
+  /// stored, is not read). False if it is not numerically positive definite. Any numbering
+  /// works; one in a postorder of the elimination tree (see `postorder()`) saves permuting
+  /// the vector of every solve.
+  bool factor(const Sparse_matrix& A)
+  {
+    CGAL_precondition(A.rows() == A.cols());
+    m_ok = false;
+    const std::vector<int> post = postorder(elimination_tree(A));
+    m_permutation.clear();
+    for(std::size_t k = 0; k < post.size(); ++k)
+      if(post[k] != static_cast<int>(k))
+      {
+        m_permutation = post;
+        break;
+      }
+    if(m_permutation.empty())
+    {
+      analyze(A);
+      m_ok = factorize(A);
+    }
+    else
+    {
+      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> p(A.rows());
+      for(std::size_t k = 0; k < post.size(); ++k) p.indices()[static_cast<Eigen::Index>(k)] = post[k];
+      Sparse_matrix B;
+      B = A.selfadjointView<Eigen::Lower>().twistedBy(p.inverse());
+      analyze(B);
+      m_ok = factorize(B);
+      m_permuted.resize(A.rows());
+    }
+    return m_ok;
+  }
+
+  bool ok() const { return m_ok; }
+  Eigen::Index rows() const { return m_n; }
+  /// stored entries of the factor (the dense blocks, the zeros of relaxed supernodes included)
+  std::size_t stored_entries() const { return m_values.size(); }
+  std::size_t number_of_supernodes() const { return m_first.size() - 1; }
+
+  /// x := A^{-1} x
+  void solve_in_place(double* x) const
+  {
+    CGAL_precondition(m_ok);
+    if(m_permutation.empty())
+      return solve_postordered(x);
+    const std::size_t n = m_permutation.size();
+    for(std::size_t k = 0; k < n; ++k) m_permuted[static_cast<Eigen::Index>(k)] = x[m_permutation[k]];
+    solve_postordered(m_permuted.data());
+    for(std::size_t k = 0; k < n; ++k) x[m_permutation[k]] = m_permuted[static_cast<Eigen::Index>(k)];
+  }
+
+private:
+  void solve_postordered(double* x) const
+  {
+    const int ns = static_cast<int>(number_of_supernodes());
+    double* t = m_scratch.data();
+    for(int s = 0; s < ns; ++s)   // L y = x
+    {
+      const int f = m_first[s], k = m_first[s + 1] - f;
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int m = k + r;
+      const double* B = m_values.data() + m_value_begin[s];
+      const int* rows = m_rows.data() + m_row_begin[s];
+      if(k <= small_width)
+      {
+        // most supernodes are a few columns wide: plain loops, where a call into Eigen's
+        // kernels would cost more than its arithmetic
+        std::fill(t, t + r, 0.0);
+        for(int c = 0; c < k; ++c)
+        {
+          const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+          const double v = x[f + c] / column[c];
+          x[f + c] = v;
+          for(int a = c + 1; a < k; ++a) x[f + a] -= column[a] * v;
+          for(int q = 0; q < r; ++q) t[q] += column[k + q] * v;
+        }
+      }
+      else
+      {
+        const Block block(B, m, k);
+        Eigen::Map<Eigen::VectorXd> y(x + f, k);
+        block.topRows(k).triangularView<Eigen::Lower>().solveInPlace(y);
+        Eigen::Map<Eigen::VectorXd>(t, r).noalias() = block.bottomRows(r) * y;
+      }
+      for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
+    }
+    for(int s = ns - 1; s >= 0; --s)   // L^T x = y
+    {
+      const int f = m_first[s], k = m_first[s + 1] - f;
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int m = k + r;
+      const double* B = m_values.data() + m_value_begin[s];
+      const int* rows = m_rows.data() + m_row_begin[s];
+      for(int q = 0; q < r; ++q) t[q] = x[rows[q]];
+      if(k <= small_width)
+      {
+        for(int c = k - 1; c >= 0; --c)
+        {
+          const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+          double v = x[f + c];
+          for(int q = 0; q < r; ++q) v -= column[k + q] * t[q];
+          for(int a = c + 1; a < k; ++a) v -= column[a] * x[f + a];
+          x[f + c] = v / column[c];
+        }
+      }
+      else
+      {
+        const Block block(B, m, k);
+        Eigen::Map<Eigen::VectorXd> y(x + f, k);
+        if(r > 0)
+          y.noalias() -= block.bottomRows(r).transpose() * Eigen::Map<const Eigen::VectorXd>(t, r);
+        block.topRows(k).triangularView<Eigen::Lower>().transpose().solveInPlace(y);
+      }
+    }
+  }
+
+  typedef Eigen::Map<const Eigen::MatrixXd> Block;
+  // Up to this many columns a supernode's solve runs as plain loops: on igea-537k (122k
+  // supernodes, 4.4 columns on average) Eigen's kernels for every supernode made a solve 1.7x
+  // slower than the loops up to 32 columns and the kernels beyond (0.062 against 0.037 s).
+  static constexpr int small_width = 32;
+
+  static Sparse_matrix upper_pattern(const Sparse_matrix& A)
+  {
+    Sparse_matrix lower = A.triangularView<Eigen::Lower>();
+    return lower.transpose();
+  }
+
+  static std::vector<int> elimination_tree_of_upper(const Sparse_matrix& upper)
+  {
+    const int n = static_cast<int>(upper.cols());
+    std::vector<int> parent(static_cast<std::size_t>(n), -1), ancestor(static_cast<std::size_t>(n), -1);
+    for(int k = 0; k < n; ++k)
+      for(Sparse_matrix::InnerIterator it(upper, k); it; ++it)
+        for(int i = static_cast<int>(it.row()); i >= 0 && i < k;)
+        {
+          const int up = ancestor[i];
+          ancestor[i] = k;
+          if(up < 0)
+            parent[i] = k;
+          i = up;
+        }
+    return parent;
+  }
+
+  Block block(int s) const
+  {
+    const int k = m_first[s + 1] - m_first[s];
+    const int m = k + static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+    return Block(m_values.data() + m_value_begin[s], m, k);
+  }
+
+  // Supernodes, their row structures and where their blocks go.
+  void analyze(const Sparse_matrix& A)
+  {
+    m_n = A.rows();
+    const int n = static_cast<int>(m_n);
+    const Sparse_matrix upper = upper_pattern(A);
+    std::vector<int> parent = elimination_tree_of_upper(upper);
+
+    // In a postorder (factor() made sure) the columns of a subtree are consecutive, and the
+    // update matrices of a supernode's children are the last ones on the stack.
+
+    // Column counts of L, row by row: the non-zeros of row k are the columns met climbing
+    // the tree from each non-zero of A's row k up to k.
+    std::vector<int> count(static_cast<std::size_t>(n), 1), mark(static_cast<std::size_t>(n), -1), children(static_cast<std::size_t>(n), 0);
+    for(int k = 0; k < n; ++k)
+    {
+      mark[k] = k;
+      for(Sparse_matrix::InnerIterator it(upper, k); it; ++it)
+        for(int i = static_cast<int>(it.row()); i < k && mark[i] != k; i = parent[i])
+        {
+          mark[i] = k;
+          ++count[i];
+        }
+      if(parent[k] >= 0)
+        ++children[parent[k]];
+    }
+
+    // Fundamental supernodes: a column joins the previous one's supernode if it is that
+    // column's parent, its only child, and has one non-zero fewer.
+    std::vector<int> first;
+    for(int j = 0; j < n; ++j)
+      if(j == 0 || parent[j - 1] != j || children[j] != 1 || count[j - 1] != count[j] + 1)
+        first.push_back(j);
+    first.push_back(n);
+
+    // Relaxed amalgamation: small supernodes merge with their parent at the cost of a few
+    // explicit zeros, for larger dense blocks (CHOLMOD's default limits).
+    const int nf = static_cast<int>(first.size()) - 1;
+    std::vector<int> super_of(static_cast<std::size_t>(n));
+    for(int s = 0; s < nf; ++s)
+      for(int j = first[s]; j < first[s + 1]; ++j) super_of[j] = s;
+    struct Group { int first, columns; long long height; double entries, zeros; };
+    std::vector<Group> groups;   // the merged supernodes so far, in order
+    std::vector<int> group_of(static_cast<std::size_t>(nf), -1);
+    auto stored = [](long long height, int columns) { return double(columns) * double(height) - 0.5 * double(columns) * double(columns - 1); };
+    for(int s = 0; s < nf; ++s)
+    {
+      Group g;
+      g.first = first[s];
+      g.columns = first[s + 1] - first[s];
+      g.height = count[first[s]];
+      g.entries = 0;
+      for(int j = first[s]; j < first[s + 1]; ++j) g.entries += count[j];
+      g.zeros = stored(g.height, g.columns) - g.entries;
+      // the child merged last is the group just before, if its tree parent is this one
+      while(!groups.empty())
+      {
+        const Group& c = groups.back();
+        const int last = c.first + c.columns - 1;
+        if(last + 1 != g.first || parent[last] != g.first)
+          break;
+        const int columns = c.columns + g.columns;
+        const long long height = c.columns + g.height;
+        const double total = stored(height, columns);
+        const double zeros = total - c.entries - g.entries;
+        const double fraction = zeros / total;
+        const bool merge = columns <= 4 || (columns <= 16 && fraction < 0.8) || (columns <= 48 && fraction < 0.1) || fraction < 0.05;
+        if(!merge)
+          break;
+        g.first = c.first;
+        g.columns = columns;
+        g.height = height;
+        g.entries += c.entries;
+        g.zeros = zeros;
+        groups.pop_back();
+      }
+      groups.push_back(g);
+    }
+    m_first.clear();
+    for(const Group& g : groups) m_first.push_back(g.first);
+    m_first.push_back(n);
+    const int ns = static_cast<int>(groups.size());
+    for(int s = 0; s < ns; ++s)
+      for(int j = m_first[s]; j < m_first[s + 1]; ++j) super_of[j] = s;
+
+    // Row structures, children first: the rows below a supernode's columns in A's columns
+    // and in its children's structures.
+    m_row_begin.assign(1, 0);
+    m_rows.clear();
+    m_parent.assign(static_cast<std::size_t>(ns), -1);
+    m_child_count.assign(static_cast<std::size_t>(ns), 0);
+    std::vector<std::vector<int> > child_lists(static_cast<std::size_t>(ns));
+    std::fill(mark.begin(), mark.end(), -1);
+    std::vector<int> rows;
+    for(int s = 0; s < ns; ++s)
+    {
+      const int f = m_first[s], l = m_first[s + 1] - 1;
+      rows.clear();
+      for(int j = f; j <= l; ++j)
+        for(Sparse_matrix::InnerIterator it(A, j); it; ++it)
+        {
+          const int i = static_cast<int>(it.row());
+          if(i > l && mark[i] != s) { mark[i] = s; rows.push_back(i); }
+        }
+      for(int c : child_lists[s])
+        for(std::size_t q = m_row_begin[c]; q < m_row_begin[c + 1]; ++q)
+        {
+          const int i = m_rows[q];
+          if(i > l && mark[i] != s) { mark[i] = s; rows.push_back(i); }
+        }
+      std::sort(rows.begin(), rows.end());
+      m_rows.insert(m_rows.end(), rows.begin(), rows.end());
+      m_row_begin.push_back(m_rows.size());
+      if(!rows.empty())
+      {
+        const int p = super_of[rows.front()];   // the tree parent of the last column
+        CGAL_assertion(parent[l] == rows.front());
+        m_parent[s] = p;
+        ++m_child_count[p];
+        child_lists[p].push_back(s);
+      }
+      std::vector<int>().swap(child_lists[s]);
+    }
+    m_value_begin.assign(1, 0);
+    for(int s = 0; s < ns; ++s)
+    {
+      const std::size_t k = static_cast<std::size_t>(m_first[s + 1] - m_first[s]);
+      m_value_begin.push_back(m_value_begin.back() + k * (k + m_row_begin[s + 1] - m_row_begin[s]));
+    }
+    m_relative.assign(static_cast<std::size_t>(n), 0);
+  }
+
+  // Multifrontal: each supernode's front gathers its columns of A and its children's update
+  // matrices (kept on a stack: in a postorder they are the last pushed), is partly factorized
+  // as a dense block, and leaves its own update matrix for its parent.
+  bool factorize(const Sparse_matrix& A)
+  {
+    const int ns = static_cast<int>(number_of_supernodes());
+    m_values.assign(m_value_begin.back(), 0.0);
+    std::vector<double> stack;            // update matrices, column-major, one after the other
+    std::vector<std::size_t> stack_begin;
+    std::vector<int> stack_owner;
+    std::vector<double> buffer;
+    std::size_t widest = 0, largest = 0;
+    for(int s = 0; s < ns; ++s)
+    {
+      const std::size_t m = static_cast<std::size_t>(m_first[s + 1] - m_first[s]) + (m_row_begin[s + 1] - m_row_begin[s]);
+      largest = (std::max)(largest, m * m);
+    }
+    buffer.resize(largest);
+    for(int s = 0; s < ns; ++s)
+    {
+      const int f = m_first[s], k = m_first[s + 1] - f;
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int m = k + r;
+      const int* rows = m_rows.data() + m_row_begin[s];
+      widest = (std::max)(widest, static_cast<std::size_t>(r));
+      for(int t = 0; t < k; ++t) m_relative[f + t] = t;
+      for(int q = 0; q < r; ++q) m_relative[rows[q]] = k + q;
+      Eigen::Map<Eigen::MatrixXd> front(buffer.data(), m, m);
+      front.setZero();
+      for(int j = f; j < f + k; ++j)
+        for(Sparse_matrix::InnerIterator it(A, j); it; ++it)
+          if(it.row() >= j)
+            front(m_relative[it.row()], j - f) += it.value();
+      for(int c = 0; c < m_child_count[s]; ++c)
+      {
+        CGAL_assertion(!stack_owner.empty() && m_parent[stack_owner.back()] == s);
+        const int child = stack_owner.back();
+        const int rc = static_cast<int>(m_row_begin[child + 1] - m_row_begin[child]);
+        const int* crows = m_rows.data() + m_row_begin[child];
+        const double* U = stack.data() + stack_begin.back();
+        for(int b = 0; b < rc; ++b)
+        {
+          const int cb = m_relative[crows[b]];
+          double* column = front.data() + static_cast<std::ptrdiff_t>(cb) * m;
+          const double* source = U + static_cast<std::ptrdiff_t>(b) * rc;
+          for(int a = b; a < rc; ++a) column[m_relative[crows[a]]] += source[a];
+        }
+        stack.resize(stack_begin.back());
+        stack_begin.pop_back();
+        stack_owner.pop_back();
+      }
+      auto F11 = front.topLeftCorner(k, k);
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(F11);
+      if(llt.info() != Eigen::Success)
+        return false;
+      if(r > 0)
+      {
+        auto F21 = front.bottomLeftCorner(r, k);
+        F11.triangularView<Eigen::Lower>().transpose().solveInPlace<Eigen::OnTheRight>(F21);
+        auto F22 = front.bottomRightCorner(r, r);
+        F22.selfadjointView<Eigen::Lower>().rankUpdate(F21, -1.0);
+        stack_begin.push_back(stack.size());
+        stack_owner.push_back(s);
+        stack.resize(stack.size() + static_cast<std::size_t>(r) * static_cast<std::size_t>(r));
+        Eigen::Map<Eigen::MatrixXd>(stack.data() + stack_begin.back(), r, r).triangularView<Eigen::Lower>() = F22.triangularView<Eigen::Lower>();
+      }
+      Eigen::Map<Eigen::MatrixXd>(m_values.data() + m_value_begin[s], m, k) = front.leftCols(k);
+      if(!front.leftCols(k).allFinite())
+        return false;
+    }
+    CGAL_assertion(stack.empty());
+    m_scratch.resize(static_cast<Eigen::Index>(widest));
+    return true;
+  }
+
+  Eigen::Index m_n = 0;
+  std::vector<int> m_first;                // supernode s: columns m_first[s] .. m_first[s + 1] - 1
+  std::vector<std::size_t> m_row_begin;    // its rows below them: m_rows[m_row_begin[s] ..]
+  std::vector<int> m_rows;
+  std::vector<int> m_parent, m_child_count;
+  std::vector<std::size_t> m_value_begin;  // its dense block: m_values[m_value_begin[s] ..]
+  std::vector<double> m_values;
+  std::vector<int> m_relative;             // a front's row of each matrix row, while factorizing
+  mutable Eigen::VectorXd m_scratch;
+  std::vector<int> m_permutation;          // empty, or the postorder the factor is in
+  mutable Eigen::VectorXd m_permuted;
+  bool m_ok = false;
+};
+
+/// The factorization as a model of `SparseLinearAlgebraWithFactorTraits_d` for the
+/// eigen-solver's shift-invert operator. `smallest_generalized_eigenpairs()` hands it a
+/// matrix in a postorder of its elimination tree, which its solves need not permute.
+class Supernodal_cholesky_traits
+{
+public:
+  class Matrix
+  {
+  public:
+    explicit Matrix(int n) : m_matrix(n, n) {}
+    Matrix(const Eigen::SparseMatrix<double>& m) : m_matrix(m) {}
+    void set_coef(int i, int j, double value, bool /* new_coef */) { m_matrix.coeffRef(i, j) = value; }
+    const Eigen::SparseMatrix<double>& eigen_object() const { return m_matrix; }
+  private:
+    Eigen::SparseMatrix<double> m_matrix;
+  };
+  typedef Eigen::VectorXd Vector;
+
+  bool factor(const Matrix& A, double& D)
+  {
+    D = 1;
+    return m_cholesky.factor(A.eigen_object());
+  }
+
+  bool linear_solver(const Vector& b, Vector& x)
+  {
+    if(!m_cholesky.ok())
+      return false;
+    x = b;
+    m_cholesky.solve_in_place(x.data());
+    return true;
+  }
+
+  const Supernodal_cholesky& factorization() const { return m_cholesky; }
+
+private:
+  Supernodal_cholesky m_cholesky;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_SUPERNODAL_CHOLESKY_H
