@@ -326,6 +326,8 @@ private:
                                          + std::to_string(largest) + " (maximum_dimension())");
     }
     if(callback && !callback(0.1)) { cancel(); return; }
+    // the rounding noise of a zero eigenvalue (see below), before the solve takes L and M
+    const double noise = 0x1p-52 * L.diagonal().sum() / M.diagonal().sum();
 
     // progress during the solve: the number of operator applications, on a saturating scale
     long applications = 0;
@@ -338,7 +340,7 @@ private:
     SVi::Eigen_solve_result r;
     try
     {
-      r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(L, M, nev, tolerance,
+      r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(std::move(L), std::move(M), nev, tolerance,
                                                                        static_cast<Eigen::Index>(restarts), keep_going);
     }
     catch(const SVi::Eigen_solve_cancelled&)
@@ -357,7 +359,6 @@ private:
     // known to about 2^-52 trace(L) / trace(M), which caps with huge cotangents (a cap of
     // height 1e-12 in a unit square) push above 1e-6 lambda_1. Zero within that noise, with
     // lambda_1 a hundred times above it, passes too (valid input passing before is unchanged).
-    const double noise = 0x1p-52 * L.diagonal().sum() / M.diagonal().sum();
     const bool separated = lambda_first > 0 && std::abs(lambda_last_zero) < 1e-6 * lambda_first;
     const bool zero_within_noise = lambda_first > 100 * noise && std::abs(lambda_last_zero) < noise;
     if(!separated && !zero_within_noise)

@@ -35,9 +35,11 @@
 #include <functional>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -83,6 +85,8 @@ public:
     double denominator = 1;
     if(!m_la.factor(m_matrix, denominator))
       throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
+    if constexpr(std::is_same<LA, Supernodal_cholesky_traits>::value)
+      m_matrix = typename LA::Matrix(0);   // its factor holds its own copy of the values
     m_sigma = sigma;
     m_factorized = true;
   }
@@ -97,9 +101,11 @@ public:
         m_matrix.set_coef(static_cast<int>(it.row()), static_cast<int>(it.col()), it.value(), true);
   }
 
+  /// `vectors` is referred to, not copied (as large as the Krylov basis): it must stay
+  /// unchanged while the operator is applied
   void set_deflation(const Eigen::MatrixXd& vectors, const Eigen::VectorXd& eigenvalues)
   {
-    m_deflation_vectors = vectors;
+    m_deflation_vectors = &vectors;
     m_deflation_weights = (eigenvalues.array() - m_sigma).inverse().matrix();
   }
 
@@ -111,12 +117,12 @@ public:
     if(!m_la.linear_solver(m_x, m_y))
       throw Numerical_error("the solve with the factorization of L - sigma M failed");
     for(Eigen::Index i = 0; i < n; ++i) y[i] = m_y[static_cast<int>(i)];
-    if(m_deflation_vectors.cols() > 0)
+    if(m_deflation_vectors != nullptr && m_deflation_vectors->cols() > 0)
     {
       Eigen::Map<const Eigen::VectorXd> xv(x, n);
       Eigen::Map<Eigen::VectorXd> yv(y, n);
-      const Eigen::VectorXd c = (m_deflation_vectors.transpose() * xv).cwiseProduct(m_deflation_weights);
-      yv.noalias() -= m_deflation_vectors * c;
+      const Eigen::VectorXd c = (m_deflation_vectors->transpose() * xv).cwiseProduct(m_deflation_weights);
+      yv.noalias() -= *m_deflation_vectors * c;
     }
   }
 
@@ -125,11 +131,11 @@ private:
   const Eigen::SparseMatrix<double>& m_B;
   std::function<bool()> m_keep_going;
   mutable LA m_la;
-  typename LA::Matrix m_matrix;   // the factorization refers to it: kept alive here
+  typename LA::Matrix m_matrix;   // an Eigen factorization refers to it: kept alive here
   mutable typename LA::Vector m_x, m_y;
   double m_sigma = 0;
   bool m_factorized = false;
-  Eigen::MatrixXd m_deflation_vectors;
+  const Eigen::MatrixXd* m_deflation_vectors = nullptr;
   Eigen::VectorXd m_deflation_weights;
 };
 
@@ -180,9 +186,10 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
 
   typedef Shift_invert_operator<LA> Op;
   typedef Spectra::SparseSymMatProd<double> BOp;
-  Op op(L, M, keep_going);
+  // on the heap, to free the factorization before the result is put together
+  std::unique_ptr<Op> op(new Op(L, M, keep_going));
   BOp bop(M);
-  op.set_shift(sigma);
+  op->set_shift(sigma);
 
   Eigen_solve_result r;
   Eigen::VectorXd values;
@@ -197,10 +204,10 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     const Eigen::Index want = (std::min<Eigen::Index>)((round == 0) ? nev : (std::min<Eigen::Index>)(nev, 4), room);
     if(want < 1)
       break;
-    op.set_deflation(vectors, values);
+    op->set_deflation(vectors, values);
     auto solve = [&](Eigen::Index count, Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
       ncv = (std::min)(n, ncv);
-      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(op, bop, count, ncv, sigma);
+      Spectra::SymGEigsShiftSolver<Op, BOp, Spectra::GEigsMode::ShiftInvert> solver(*op, bop, count, ncv, sigma);
       Eigen::Index converged = 0;
       try
       {
@@ -297,12 +304,17 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     if(round == max_rounds - 1)
       break;
   }
+  op.reset();
   r.eigenvalues = values.head(nev);
-  r.eigenvectors = vectors.leftCols(nev);
+  if(vectors.cols() == nev)
+    r.eigenvectors = std::move(vectors);
+  else
+    r.eigenvectors = vectors.leftCols(nev);
   return r;
 }
 
-/// Same as `smallest_generalized_eigenpairs_in_order()`. With the default linear algebra on a
+/// Same as `smallest_generalized_eigenpairs_in_order()`, with the matrices taken over (a
+/// caller that has no further use for them moves them in). With the default linear algebra on a
 /// large mesh, the problem is first renumbered in the nested-dissection order, then in a
 /// postorder of its elimination tree (which keeps the factor's non-zeros and makes every
 /// supernode's columns consecutive), and factorized by the supernodal Cholesky: at igea-537k
@@ -311,8 +323,8 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
 /// twice per solve (10% of the eigen-solve at 537k vertices, scattered reads of vectors
 /// larger than the cache). The eigenvectors are numbered back.
 template <class LA = Default_eigen_LA>
-Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
-                                                   const Eigen::SparseMatrix<double>& M,
+Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L,
+                                                   Eigen::SparseMatrix<double> M,
                                                    Eigen::Index nev,
                                                    double tolerance = 1e-10,
                                                    Eigen::Index max_iterations = 1000,
@@ -332,6 +344,8 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     const typename Ordering::PermutationType to_new = eliminated.inverse();
     renumbered_L = L.selfadjointView<Eigen::Lower>().twistedBy(to_new);
     renumbered_M = M.selfadjointView<Eigen::Lower>().twistedBy(to_new);
+    Eigen::SparseMatrix<double>().swap(L);   // not needed any more (45 MB at 537k vertices)
+    Eigen::SparseMatrix<double>().swap(M);
     Eigen_solve_result r = smallest_generalized_eigenpairs_in_order<Supernodal_cholesky_traits>(renumbered_L, renumbered_M, nev, tolerance,
                                                                                                  max_iterations, keep_going);
     r.eigenvectors = eliminated * r.eigenvectors;   // row k goes back to row eliminated[k]
