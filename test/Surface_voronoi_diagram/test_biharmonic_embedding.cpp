@@ -26,6 +26,18 @@ void matrices(const Mesh& m, Eigen::SparseMatrix<double>& L, Eigen::SparseMatrix
   SV::internal::assemble_cotangent_laplacian(im.points, im.triangles, L, M);
 }
 
+// A torus bent out of its symmetry: its Laplacian's eigenvalues are simple, so eigenvectors and
+// embedded distances are unique.
+void make_bent_torus(Mesh& m, std::size_t nu, std::size_t nv)
+{
+  GEN::make_torus(m, 1.0, 0.35, nu, nv);
+  for(auto v : vertices(m))
+  {
+    const Point p = m.point(v);
+    m.point(v) = Point(p.x() * (1 + 0.3 * p.z()), 1.1 * p.y() + 0.1 * p.x() * p.x(), p.z());
+  }
+}
+
 } // namespace
 
 TEST_CASE("embedding: eigenvectors are M-orthonormal and solve L phi = lambda M phi", "[embedding]")
@@ -205,12 +217,7 @@ TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered 
   // Eigen's LDLT in its own AMD ordering. A bent torus has no symmetry, so its eigenvalues are
   // simple and the embedded distances unique.
   Mesh m;
-  GEN::make_torus(m, 1.0, 0.35, 90, 36);
-  for(auto v : vertices(m))
-  {
-    const Point p = m.point(v);
-    m.point(v) = Point(p.x() * (1 + 0.3 * p.z()), 1.1 * p.y() + 0.1 * p.x() * p.x(), p.z());
-  }
+  make_bent_torus(m, 90, 36);
   typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > > Reference_LA;
   const CGAL::Biharmonic_embedding<Mesh> fast(m, SV::parameters::embedding_dimension(12));
   const CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, Reference_LA> reference(m, SV::parameters::embedding_dimension(12));
@@ -287,12 +294,7 @@ TEST_CASE("embedding: above the nested-dissection size the supernodal eigen-solv
   // problem and factorizes it with the supernodal Cholesky; the reference solves the same
   // matrices with Eigen's simplicial LLT in AMD order. A bent torus: simple eigenvalues.
   Mesh m;
-  GEN::make_torus(m, 1.0, 0.35, 400, 256);
-  for(auto v : vertices(m))
-  {
-    const Point p = m.point(v);
-    m.point(v) = Point(p.x() * (1 + 0.3 * p.z()), 1.1 * p.y() + 0.1 * p.x() * p.x(), p.z());
-  }
+  make_bent_torus(m, 400, 256);
   Eigen::SparseMatrix<double> L, M;
   matrices(m, L, M);
   REQUIRE(L.rows() >= SV::internal::Nested_dissection_ordering<int>::smallest_size);
