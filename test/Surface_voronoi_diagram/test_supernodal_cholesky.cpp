@@ -107,6 +107,15 @@ TEST_CASE("supernodal Cholesky: solves agree with Eigen's simplicial LLT", "[emb
     check_solves(postordered(random_spd(500, 2, 80, 1)));
     check_solves(postordered(random_spd(2000, 1, 40, 2)));
   }
+  SECTION("a numbering that is not a postorder, which the factorization permutes inside")
+  {
+    const Sparse A = random_spd(600, 2, 40, 7);
+    const std::vector<int> post = Cholesky::postorder(Cholesky::elimination_tree(A));
+    bool identity = true;
+    for(std::size_t k = 0; k < post.size(); ++k) identity = identity && post[k] == static_cast<int>(k);
+    REQUIRE_FALSE(identity);
+    check_solves(A);
+  }
   SECTION("a forest: no coupling at all, and one row")
   {
     check_solves(postordered(random_spd(300, 0, 0, 3)));
