@@ -104,7 +104,9 @@ public:
   {
     CGAL_precondition(A.rows() == A.cols());
     m_ok = false;
-    const std::vector<int> post = postorder(elimination_tree(A));
+    const Sparse_matrix upper = upper_pattern(A);
+    const std::vector<int> parent = elimination_tree_of_upper(upper);
+    const std::vector<int> post = postorder(parent);
     m_permutation.clear();
     for(std::size_t k = 0; k < post.size(); ++k)
       if(post[k] != static_cast<int>(k))
@@ -114,7 +116,7 @@ public:
       }
     if(m_permutation.empty())
     {
-      analyze(A);
+      analyze(A, upper, parent);
       m_ok = factorize(A);
     }
     else
@@ -123,7 +125,8 @@ public:
       for(std::size_t k = 0; k < post.size(); ++k) p.indices()[static_cast<Eigen::Index>(k)] = post[k];
       Sparse_matrix B;
       B = A.selfadjointView<Eigen::Lower>().twistedBy(p.inverse());
-      analyze(B);
+      const Sparse_matrix upper_of_B = upper_pattern(B);
+      analyze(B, upper_of_B, elimination_tree_of_upper(upper_of_B));
       m_ok = factorize(B);
       m_permuted.resize(A.rows());
     }
@@ -131,9 +134,6 @@ public:
   }
 
   bool ok() const { return m_ok; }
-  Eigen::Index rows() const { return m_n; }
-  /// stored entries of the factor (the dense blocks, the zeros of relaxed supernodes included)
-  std::size_t stored_entries() const { return m_values.size(); }
   std::size_t number_of_supernodes() const { return m_first.size() - 1; }
 
   /// x := A^{-1} x
@@ -249,13 +249,11 @@ private:
     return Block(m_values.data() + m_value_begin[s], m, k);
   }
 
-  // Supernodes, their row structures and where their blocks go.
-  void analyze(const Sparse_matrix& A)
+  // Supernodes, their row structures and where their blocks go; `upper` and `parent` are
+  // A's upper pattern and elimination tree, which factor() has already computed.
+  void analyze(const Sparse_matrix& A, const Sparse_matrix& upper, const std::vector<int>& parent)
   {
-    m_n = A.rows();
-    const int n = static_cast<int>(m_n);
-    const Sparse_matrix upper = upper_pattern(A);
-    std::vector<int> parent = elimination_tree_of_upper(upper);
+    const int n = static_cast<int>(A.rows());
 
     // In a postorder (factor() made sure) the columns of a subtree are consecutive, and the
     // update matrices of a supernode's children are the last ones on the stack.
@@ -456,7 +454,6 @@ private:
     return true;
   }
 
-  Eigen::Index m_n = 0;
   std::vector<int> m_first;                // supernode s: columns m_first[s] .. m_first[s + 1] - 1
   std::vector<std::size_t> m_row_begin;    // its rows below them: m_rows[m_row_begin[s] ..]
   std::vector<int> m_rows;

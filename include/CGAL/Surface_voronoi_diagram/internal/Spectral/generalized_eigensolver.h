@@ -69,8 +69,8 @@ public:
   Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B,
                         const std::function<bool()>& keep_going)
     : m_A(A), m_B(B), m_keep_going(keep_going), m_matrix(static_cast<int>(A.rows())),
-      m_x(solves_in_place ? std::size_t(0) : static_cast<std::size_t>(A.rows())),
-      m_y(solves_in_place ? std::size_t(0) : static_cast<std::size_t>(A.rows()))
+      m_x(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows())),
+      m_y(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows()))
   {}
 
   Eigen::Index rows() const { return m_A.rows(); }
@@ -85,7 +85,7 @@ public:
     double denominator = 1;
     if(!m_la.factor(m_matrix, denominator))
       throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
-    if constexpr(std::is_same<LA, Supernodal_cholesky_traits>::value)
+    if constexpr(supernodal)
       m_matrix = typename LA::Matrix(0);   // its factor holds its own copy of the values
     m_sigma = sigma;
     m_factorized = true;
@@ -113,7 +113,7 @@ public:
   {
     if(m_keep_going && !m_keep_going()) throw Eigen_solve_cancelled();
     const Eigen::Index n = rows();
-    if constexpr(solves_in_place)
+    if constexpr(supernodal)
     {
       // solved in place in Spectra's vector, without the traits' two copies
       std::copy(x, x + n, y);
@@ -136,7 +136,8 @@ public:
   }
 
 private:
-  static constexpr bool solves_in_place = std::is_same<LA, Supernodal_cholesky_traits>::value;
+  // the package's factorization: it keeps no reference to the matrix and solves in place
+  static constexpr bool supernodal = std::is_same<LA, Supernodal_cholesky_traits>::value;
   const Eigen::SparseMatrix<double>& m_A;
   const Eigen::SparseMatrix<double>& m_B;
   std::function<bool()> m_keep_going;
