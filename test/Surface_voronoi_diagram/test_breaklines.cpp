@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <test_meshes.h>
 
 using namespace svd_test;
@@ -111,4 +112,95 @@ TEST_CASE("breaklines: an open breakline only bends cells around its end", "[bre
   // the areas are those of a plain Voronoi diagram with both sites (Euclidean distances are
   // unchanged; the field only had to travel around the end)
   CHECK(vd.cell_area(0) == Approx(free_vd.cell_area(0)).epsilon(1e-9));
+}
+
+namespace {
+
+// The face location of the point (1 - t) a + t b on the mesh edge from vertex a to vertex b,
+// exactly on the edge (the third coordinate exactly 0).
+Location<Mesh> on_edge(const Mesh& m, Mesh::Vertex_index a, Mesh::Vertex_index b, double t)
+{
+  const auto h = m.halfedge(a, b);
+  REQUIRE(h != Mesh::null_halfedge());
+  const auto f = m.face(h);
+  Location<Mesh> l(f, {{ 0., 0., 0. }});
+  auto g = m.halfedge(f);
+  for(int k = 0; k < 3; ++k, g = m.next(g))
+    l.second[k] = (m.source(g) == a) ? 1 - t : (m.source(g) == b ? t : 0.);
+  return l;
+}
+
+Mesh::Vertex_index vertex_at(const Mesh& m, double x, double y)
+{
+  for(auto v : m.vertices())
+    if(near(CGAL::to_double(m.point(v).x()), x) && near(CGAL::to_double(m.point(v).y()), y)) return v;
+  FAIL("no vertex there");
+  return Mesh::null_vertex();
+}
+
+} // namespace
+
+TEST_CASE("breaklines: a site on a breakline owns the nearest points on both sides", "[breaklines]")
+{
+  Mesh m;
+  GEN::make_planar_grid(m, 21, 21, 1.0, 1.0);
+  // y = 0.5 across the whole square: two halves that no cell crosses
+  auto line = mark(m, [&](const Point& p) { return near(CGAL::to_double(p.y()), 0.5); });
+  // on the line: a point inside an edge, and a vertex; off it, sites on both sides
+  std::vector<Location<Mesh> > sites = {
+    on_edge(m, vertex_at(m, 0.30, 0.5), vertex_at(m, 0.35, 0.5), 0.4),
+    CGAL::Polygon_mesh_processing::locate_vertex<double>(vertex_at(m, 0.7, 0.5), m) };
+  for(const Point& p : { Point(0.2, 0.8, 0), Point(0.8, 0.85, 0), Point(0.5, 0.2, 0), Point(0.1, 0.1, 0), Point(0.9, 0.3, 0) })
+    sites.push_back(CGAL::Polygon_mesh_processing::locate(p, m));
+  std::vector<Point> points;
+  for(const auto& s : sites) points.push_back(point_of(s, m));
+  const std::size_t on_line = 2;
+
+  // the oracle: the nearest of the sites on the line and of those on the point's own side
+  auto oracle = [&](const Point& p, std::size_t& label) {
+    std::vector<std::pair<double, std::size_t> > d;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(i < on_line || (points[i].y() > 0.5) == (p.y() > 0.5))
+        d.emplace_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(p, points[i]))), i);
+    std::sort(d.begin(), d.end());
+    label = d[0].second;
+    return d[1].first - d[0].first > 1e-6;   // not a near tie
+  };
+  auto check_labels = [&](const auto& vd) {
+    check_invariants(vd);
+    std::array<std::array<std::size_t, 2>, 2> sides = {{ {{ 0, 0 }}, {{ 0, 0 }} }};
+    std::size_t checked = 0, agree = 0;
+    for(const auto& l : area_uniform_locations(m, 3000, 11))
+    {
+      const Point p = point_of(l, m);
+      std::size_t label;
+      if(near(CGAL::to_double(p.y()), 0.5) || !oracle(p, label)) continue;
+      ++checked;
+      agree += (vd.site_of(l) == label);
+      if(label < on_line) ++sides[label][p.y() > 0.5];
+    }
+    CHECK(checked > 2900);
+    CHECK(agree == checked);
+    for(std::size_t i = 0; i < on_line; ++i)
+    {
+      CHECK(sides[i][0] > 20);
+      CHECK(sides[i][1] > 20);
+      CHECK(vd.number_of_pieces(i) == 1);
+    }
+  };
+  Euclidean e(m);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> euclidean(m, e, sites, CGAL::parameters::edge_is_constrained_map(line));
+  check_labels(euclidean);
+  // the same point a hair off the line is on one side only: its cell stays there
+  std::vector<Location<Mesh> > nudged = sites;
+  for(double& b : nudged[0].second) b = (b == 0.) ? 1e-12 : b - 0.5e-12;
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> one_side(m, e, nudged, CGAL::parameters::edge_is_constrained_map(line));
+  std::array<std::size_t, 2> nudged_sides = {{ 0, 0 }};
+  for(const auto& l : area_uniform_locations(m, 3000, 11))
+    if(one_side.site_of(l) == 0) ++nudged_sides[point_of(l, m).y() > 0.5];
+  CHECK((nudged_sides[0] == 0) != (nudged_sides[1] == 0));
+  // the geodesic metric: on a plane, the same distances
+  SV::Geodesic_metric<Mesh> g(m);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > geodesic(m, g, sites, CGAL::parameters::edge_is_constrained_map(line));
+  check_labels(geodesic);
 }

@@ -555,6 +555,7 @@ struct Folded_grid_propagation
   St_run r;
   std::vector<SVI::Site> located;
   std::vector<std::size_t> site_faces;
+  std::vector<std::pair<std::size_t, std::size_t> > breakline_site_faces;   // none: no site on the fold
   Folded_grid_fields fields{ nullptr };
   std::unique_ptr<SVI::Propagation<St_mesh, Folded_grid_fields, Blocked> > propagation;
 
@@ -563,7 +564,7 @@ struct Folded_grid_propagation
     folded_grid_sites(amplitude, number_of_sites, rng, r, located, site_faces);
     fields.field = &r.field;
     const St_indexed* mesh = &r.mesh;
-    propagation.reset(new SVI::Propagation<St_mesh, Folded_grid_fields, Blocked>(r.mesh, fields, site_faces,
+    propagation.reset(new SVI::Propagation<St_mesh, Folded_grid_fields, Blocked>(r.mesh, fields, site_faces, breakline_site_faces,
         Blocked([mesh](std::size_t f, int k) { return folded_grid_blocked_edge(mesh->edges[f][k]); })));
     propagation->run();
     std::vector<std::size_t> all_faces(r.mesh.number_of_faces());

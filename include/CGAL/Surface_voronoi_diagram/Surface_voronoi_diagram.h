@@ -48,6 +48,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -177,7 +178,11 @@ public:
   ///     \cgalParamDefault{a default-constructed `Geom_traits`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{edge_is_constrained_map}
-  ///     \cgalParamDescription{breaklines: a property map telling which edges of `tm` no cell crosses}
+  ///     \cgalParamDescription{breaklines: a property map telling which edges of `tm` no cell crosses.
+  ///       A site on a breakline (a face location with a barycentric coordinate exactly 0, on a
+  ///       breakline edge, or two, at a vertex a breakline passes through or ends at) starts on
+  ///       every side of it: its cell holds what is nearest to it on each side, and is one cell
+  ///       through the site. This is what `feature_line_sites()` places.}
   ///     \cgalParamType{a model of `ReadablePropertyMap` with `edge_descriptor` as key and `bool` as value}
   ///     \cgalParamDefault{no breaklines}
   ///   \cgalParamNEnd
@@ -498,6 +503,12 @@ private:
       CGAL_precondition_msg(policy == Surface_voronoi::Coincident_sites::MERGE, "two sites are at the same surface point");
       m_data.merged_into[pair.second] = pair.first;
     }
+    // sites on breaklines start on every side of them
+    std::vector<std::pair<std::size_t, std::size_t> >& starts = m_data.breakline_site_faces;
+    starts = m_data.breaklines.faces_of_sites_on_breaklines(*m_data.mesh, m_data.sites);
+    starts.erase(std::remove_if(starts.begin(), starts.end(),
+                                [&](const std::pair<std::size_t, std::size_t>& x) { return m_data.merged_into[x.first] != no_site; }),
+                 starts.end());
 
     SVi::Builder_settings settings;
     settings.candidates = choose_parameter(get_parameter(np, SVnp::candidate_selection),

@@ -145,7 +145,8 @@ template <class TriangleMesh, class Blocked_edge>
 Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition,
                                 std::size_t number_of_sites, const Blocked_edge& blocked_edge,
                                 std::vector<std::pair<std::size_t, std::size_t> >* site_pairs = nullptr,
-                                bool parallel = false)
+                                bool parallel = false,
+                                const std::vector<std::pair<std::size_t, std::size_t> >* breakline_site_faces = nullptr)
 {
   const std::size_t np = partition.pieces.size();
   Disjoint_sets pieces_of_a_cell(np);
@@ -159,6 +160,25 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
         out.unite(p, q);
     });
   });
+  // a site on a breakline: its pieces around its location are one component through it
+  if(breakline_site_faces)
+  {
+    auto piece_of = [&](std::size_t f, std::size_t site) {
+      for(std::size_t p = partition.face_begin[f]; p < partition.face_begin[f + 1]; ++p)
+        if(partition.pieces[p].site == site) return p;
+      return no_site;
+    };
+    std::size_t first = no_site;
+    for(std::size_t k = 0; k < breakline_site_faces->size(); ++k)
+    {
+      const std::pair<std::size_t, std::size_t>& x = (*breakline_site_faces)[k];
+      if(k == 0 || x.first != (*breakline_site_faces)[k - 1].first) first = no_site;
+      const std::size_t p = piece_of(x.second, x.first);
+      if(p == no_site) continue;
+      if(first == no_site) first = p;
+      else pieces_of_a_cell.unite(first, p);
+    }
+  }
 
   Cell_components cc;
   cc.piece_component.assign(np, 0);

@@ -78,7 +78,7 @@ public:
     d.statistics.sites = n;
     d.statistics.surface_area = m_mesh.total_area;
 
-    Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, is_blocked);
+    Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked);
     if(global_nearest)
       find_global_nearest(propagation.candidates);
     else
@@ -121,7 +121,7 @@ public:
     auto round_done = [&]() { return progress(0.7 + 0.25 * double(round + 1) / double(round + 2)); };
     if(!global_nearest && m_settings.repair)
     {
-      Symbolic_cell_check<TriangleMesh> check(m_mesh, propagation.candidates, m_cuts);
+      Symbolic_cell_check<TriangleMesh> check(m_mesh, propagation.candidates, m_cuts, &d.breakline_site_faces);
       std::vector<std::pair<std::size_t, std::size_t> > orphans;
       for(;; ++round)
       {
@@ -172,7 +172,7 @@ public:
         break;
       }
       decided_on_cuts = false;   // from here on, the stitched partition decides
-      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, nullptr, m_settings.parallel);
+      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, nullptr, m_settings.parallel, &d.breakline_site_faces);
       regions_of_site.assign(n, 0);
       for(std::size_t i = 0; i < n; ++i) regions_of_site[i] = components.site_components[i].size();
       const std::size_t broken = number_of_broken_cells(components);

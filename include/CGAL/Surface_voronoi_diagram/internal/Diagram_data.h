@@ -27,6 +27,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -40,6 +41,7 @@ struct Diagram_data
   Breaklines breaklines;
   std::vector<Site> sites;
   std::vector<std::size_t> merged_into;          // by site: the site owning its cell, or no_site
+  std::vector<std::pair<std::size_t, std::size_t> > breakline_site_faces;   // (site, face): where sites on breaklines start
   std::unique_ptr<Embedding_values> embedding;   // embedding metrics only
   Candidate_lists candidates;                    // after propagation and repair
   Partition partition;                           // empty when the cells were measured on the cuts

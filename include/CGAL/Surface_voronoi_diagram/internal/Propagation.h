@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -51,9 +52,11 @@ public:
   /// the number of times a face can be repropagated (the epoch is part of the offer keys)
   static constexpr std::size_t max_epochs = 65536;
 
+  /// `breakline_site_faces`: the (site, face) pairs where a site on a breakline starts, its own
+  /// face among them (`Breaklines::faces_of_sites_on_breaklines()`)
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
-              const Blocked& blocked)
-    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_blocked(blocked)
+              const std::vector<std::pair<std::size_t, std::size_t> >& breakline_site_faces, const Blocked& blocked)
+    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_breakline_site_faces(breakline_site_faces), m_blocked(blocked)
   {
     link_faces();
   }
@@ -68,6 +71,8 @@ public:
     forget_offers();
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) offer(static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     drain(no_ban, nullptr);
     for(Candidate_list& list : candidates) clean_candidate_list(list);
@@ -120,6 +125,9 @@ public:
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
         offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first] && is_touched[x.second] && !banned(x.first, x.second))
+        offer(static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
     drain(banned, &is_touched);
     m_sites_before = nullptr;
     touched.clear();
@@ -363,6 +371,7 @@ private:
   const Mesh& m_mesh;
   const Fields& m_fields;
   const std::vector<std::size_t>& m_site_faces;
+  const std::vector<std::pair<std::size_t, std::size_t> >& m_breakline_site_faces;
   Blocked m_blocked;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
   std::vector<std::uint32_t> m_epoch;

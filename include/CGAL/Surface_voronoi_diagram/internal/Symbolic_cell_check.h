@@ -50,8 +50,12 @@ class Symbolic_cell_check
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  Symbolic_cell_check(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts)
-    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts)
+  /// `breakline_site_faces`, if given: the faces where the sites on breaklines start
+  /// (`Breaklines::faces_of_sites_on_breaklines()`), whose pieces of such a site are one
+  /// region through the site's location
+  Symbolic_cell_check(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts,
+                      const std::vector<std::pair<std::size_t, std::size_t> >* breakline_site_faces = nullptr)
+    : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_breakline_site_faces(breakline_site_faces)
   {}
 
   /// Finds the cells in several pieces. If it can decide (no face with an exact tie, and every
@@ -87,6 +91,13 @@ public:
         }
       }
     });
+
+    if(m_breakline_site_faces)
+      for(const std::pair<std::size_t, std::size_t>& x : *m_breakline_site_faces)
+      {
+        const std::size_t own = piece_of(sites[x.first].face, x.first), side = piece_of(x.second, x.first);
+        if(own != no_site && side != no_site) regions.unite(own, side);
+      }
 
     // the regions of each site, in the order of their first piece
     const std::size_t n = sites.size();
@@ -228,6 +239,7 @@ private:
       std::vector<std::size_t> region(pieces.size(), no_site);
       std::size_t regions = 0;
       auto flood = [&](std::size_t first) {
+        if(region[first] != no_site) return;
         std::vector<std::size_t> stack(1, first);
         region[first] = regions;
         while(!stack.empty())
@@ -239,12 +251,23 @@ private:
             if(region[j] == no_site) { region[j] = regions; stack.push_back(j); }
           });
         }
-        ++regions;
+      };
+      auto index_of = [&](std::size_t f, std::size_t local) {
+        return std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ f, local }) - pieces.begin());
       };
       if(own != no_site)
-        flood(std::size_t(std::lower_bound(pieces.begin(), pieces.end(), Piece_ref{ sites[i].face, own }) - pieces.begin()));
+      {
+        flood(index_of(sites[i].face, own));
+        // a site on a breakline: its pieces on every side of it are its own region too
+        for(auto r = breakline_faces_of(i); r.first != r.second; ++r.first)
+        {
+          const std::size_t side = piece_in_face(r.first->second, static_cast<std::uint32_t>(i));
+          if(side != no_site) flood(index_of(r.first->second, side));
+        }
+        ++regions;
+      }
       for(std::size_t j = 0; j < pieces.size(); ++j)
-        if(region[j] == no_site) flood(j);
+        if(region[j] == no_site) flood(j), ++regions;
       regions_of_site[i] = regions;
       if(regions > 1)
       {
@@ -264,6 +287,18 @@ private:
         if(!in_own_region[site][next[site]++]) orphans.emplace_back(site, f);
       }
     return true;
+  }
+
+  // the (site, face) pairs of site i in `m_breakline_site_faces`
+  std::pair<const std::pair<std::size_t, std::size_t>*, const std::pair<std::size_t, std::size_t>*> breakline_faces_of(std::size_t i) const
+  {
+    typedef std::pair<std::size_t, std::size_t> Pair;
+    if(!m_breakline_site_faces || m_breakline_site_faces->empty()) return { nullptr, nullptr };
+    const Pair* begin = m_breakline_site_faces->data();
+    const Pair* end = begin + m_breakline_site_faces->size();
+    const Pair* first = std::lower_bound(begin, end, Pair(i, 0));
+    const Pair* last = std::lower_bound(first, end, Pair(i + 1, 0));
+    return { first, last };
   }
 
   // The index in face g's cut of the piece of `site`, or no_site.
@@ -519,6 +554,7 @@ private:
   const Mesh& m_mesh;
   const Candidate_lists& m_candidates;
   const Face_cuts& m_cuts;
+  const std::vector<std::pair<std::size_t, std::size_t> >* m_breakline_site_faces;
   std::vector<std::size_t> m_piece_begin;
   std::vector<std::size_t> m_site_of_piece;
 };
