@@ -178,3 +178,26 @@ TEST_CASE("lloyd: a density map that is negative, not a number or zero everywher
     m.remove_property_map(density);
   }
 }
+
+TEST_CASE("lloyd: the sites before first_moving_site stay where they are, the others relax", "[lloyd]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.4, 60, 24);
+  Euclidean e(m);
+  const auto start = area_uniform_locations(m, 80, 5);
+  const std::size_t fixed = 20;
+  const auto r = SV::lloyd_relaxation(m, e, start, SV::parameters::first_moving_site(fixed, CGAL::parameters::number_of_iterations(4)));
+  REQUIRE(r.sites.size() == start.size());
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < start.size(); ++i)
+  {
+    if(i < fixed)
+    {
+      CHECK(r.sites[i].first == start[i].first);
+      CHECK(r.sites[i].second == start[i].second);
+    }
+    else moved += (point_of(r.sites[i], m) != point_of(start[i], m));
+  }
+  CHECK(moved == start.size() - fixed);
+  CHECK(r.energies.back() < r.energies.front());
+}

@@ -165,6 +165,13 @@ std::shared_ptr<const std::vector<double> > centroid_density(const Indexed_mesh<
 ///       value type convertible to `double` (finite, not negative, not zero everywhere)}
 ///     \cgalParamDefault{a uniform density}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::first_moving_site}
+///     \cgalParamDescription{the sites before this index stay where they are: the sites that
+///       `feature_line_sites()` placed on breaklines and on the border (already evenly spaced
+///       along their lines), given first, while the others relax around them}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{0: every site moves}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the number of Lloyd steps}
 ///     \cgalParamType{`std::size_t`}

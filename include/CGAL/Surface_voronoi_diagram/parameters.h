@@ -281,8 +281,8 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
 // An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
 // density (a std::shared_ptr to a std::vector<double> by internal vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
-// An internal hook, not API: lloyd_relaxation() keeps the sites before this index in place
-// (add_sites_for_valid_dual() relaxes only the sites it added).
+// lloyd_relaxation() keeps the sites before this index in place (the sites on feature lines,
+// placed first; add_sites_for_valid_dual() relaxes only the sites it added).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)
 #endif
 
