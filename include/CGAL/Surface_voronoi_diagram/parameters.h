@@ -76,6 +76,8 @@ enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
 enum vertex_density_map_t { vertex_density_map };
 enum max_density_ratio_t { max_density_ratio };
 enum centroid_density_t { centroid_density };
+enum sample_border_t { sample_border };
+enum corner_angle_t { corner_angle };
 } // namespace internal_np
 
 namespace parameters {
@@ -250,6 +252,22 @@ unspecified_type max_density_ratio(const T& value);
 template <class T, class NamedParameters>
 unspecified_type max_density_ratio(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `sample_border`: whether
+/// `feature_line_sites()` counts the border edges of the mesh among its feature lines (`bool`).
+template <class T>
+unspecified_type sample_border(const T& value);
+/// The chain `chain` with `sample_border(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type sample_border(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `corner_angle`: the turn, in degrees, above
+/// which `feature_line_sites()` takes a vertex inside a feature line for a corner (`double`).
+template <class T>
+unspecified_type corner_angle(const T& value);
+/// The chain `chain` with `corner_angle(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type corner_angle(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
@@ -278,6 +296,8 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(sample_border)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(corner_angle)
 // An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
 // density (a std::shared_ptr to a std::vector<double> by internal vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
