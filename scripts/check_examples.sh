@@ -25,6 +25,7 @@ run blue_noise_sites -- random_sites.ply blue_noise_sites.ply
 run compare_metrics -- compare_biharmonic.ply compare_euclidean.ply compare_geodesic.ply compare_rvd.ply
 run remeshing data/lampshade_thin.off 2000 10 remeshed.off -- remeshed.off
 run geodesic_remeshing data/lampshade_thin.off 500 5 geodesic_remeshed.off -- geodesic_remeshed.off
+run feature_remeshing data/lampshade_thin.off 2000 60 feature_remeshed.off -- feature_remeshed.off
 run graph_algorithms --
 run polyhedron_diagram --
 run user_metric --

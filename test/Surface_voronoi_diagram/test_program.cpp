@@ -12,6 +12,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/OFF.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include <catch2/catch.hpp>
@@ -2126,6 +2127,121 @@ TEST_CASE("program: --sharp-edges makes the edges where the surface turns by mor
     const Run r = run_program(dir, { (dir / "box.off").string(), "--random", "5", "--sharp-edges", bad });
     check_one_line_error(r, 2);
   }
+}
+
+// An open roof over the unit square, its ridge along x = 0.5 (the slopes turn by 2 atan(0.6),
+// 62 degrees, there): n x n squares of two triangles each.
+Soup roof(std::size_t n)
+{
+  Soup s;
+  for(std::size_t j = 0; j <= n; ++j)
+    for(std::size_t i = 0; i <= n; ++i)
+    {
+      const double x = double(i) / double(n), y = double(j) / double(n);
+      s.points.push_back({{ x, y, 0.3 * (1 - std::abs(2 * x - 1)) }});
+    }
+  auto at = [&](std::size_t i, std::size_t j) { return j * (n + 1) + i; };
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      s.faces.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      s.faces.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  return s;
+}
+
+// The remesh (--dual) as a surface mesh, and the length of its edges that `on_line` holds at
+// both ends, of its border edges, and whether every border vertex satisfies `on_border`.
+struct Dual_lines
+{
+  double line_length = 0, border_length = 0;
+  bool border_vertices_on_border = true;
+};
+template <class Line, class Border>
+Dual_lines dual_lines(const fs::path& path, const Line& on_line, const Border& on_border)
+{
+  CGAL::Surface_mesh<PPoint> dual;
+  REQUIRE(CGAL::IO::read_OFF(path.string(), dual));
+  Dual_lines r;
+  auto v3 = [&](CGAL::Surface_mesh<PPoint>::Vertex_index v) { const PPoint& p = dual.point(v); return V3{{ p.x(), p.y(), p.z() }}; };
+  for(auto e : dual.edges())
+  {
+    const V3 a = v3(dual.vertex(e, 0)), b = v3(dual.vertex(e, 1));
+    if(on_line(a) && on_line(b)) r.line_length += distance(a, b);
+    if(dual.is_border(e))
+    {
+      r.border_length += distance(a, b);
+      r.border_vertices_on_border = r.border_vertices_on_border && on_border(a) && on_border(b);
+    }
+  }
+  return r;
+}
+
+// Sampled sites with breaklines (--sharp-edges) start on them, evenly spaced, and with --dual
+// on the border too; they are part of N, stay through --lloyd, and the remesh's edges run along
+// the ridge and its border along the input's border. Too few sites for the lines is exit 2.
+TEST_CASE("program: sampled sites start on the breaklines and, for a remesh, on the border", "[program][dual]")
+{
+  Temp_dir dir;
+  write_mesh(dir / "roof.off", roof(40));
+  const std::string mesh = (dir / "roof.off").string();
+  auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9; };
+  auto on_ridge = [&](const V3& p) { return near(p[0], 0.5) && near(p[2], 0.3); };
+  auto on_border = [&](const V3& p) { return near(p[0], 0) || near(p[0], 1) || near(p[1], 0) || near(p[1], 1); };
+  auto run_with = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = { mesh, "--blue-noise", "300", "--seed", "1", "--metric", "euclidean", "--lloyd", "5",
+                                      "--sites-out", (dir / (name + ".xyz")).string(), "--stats" };
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Run r = run_program(dir, args);
+    check_success(r);
+    return parse_stats(r.out);
+  };
+  // the ridge only: its sites first, then the others, none of those on it
+  const auto ridge = run_with("ridge", { "--sharp-edges", "30" });
+  const std::size_t k = std::size_t(stat_value(ridge, "feature_sites"));
+  CHECK(stat_value(ridge, "sites") == 300);
+  CHECK((k >= 15 && k <= 25));   // about 1 / h for 300 sites on a surface of area 1.17
+  const std::vector<V3> ridge_sites = read_sites_out(dir / "ridge.xyz");
+  REQUIRE(ridge_sites.size() == 300);
+  for(std::size_t i = 0; i < ridge_sites.size(); ++i) CHECK(on_ridge(ridge_sites[i]) == (i < k));
+  // evenly spaced, from end to end
+  std::vector<double> ys;
+  for(std::size_t i = 0; i < k; ++i) ys.push_back(ridge_sites[i][1]);
+  std::sort(ys.begin(), ys.end());
+  CHECK(ys.front() == 0.);
+  CHECK(ys.back() == 1.);
+  for(std::size_t i = 1; i < ys.size(); ++i) CHECK(std::abs((ys[i] - ys[i - 1]) * double(k - 1) - 1) < 1e-6);
+  // they stay through Lloyd: the same sites without it
+  run_with("ridge_unrelaxed", { "--sharp-edges", "30", "--lloyd", "0" });
+  const std::vector<V3> unrelaxed = read_sites_out(dir / "ridge_unrelaxed.xyz");
+  REQUIRE(unrelaxed.size() == 300);
+  for(std::size_t i = 0; i < k; ++i) CHECK(unrelaxed[i] == ridge_sites[i]);
+
+  // a remesh: the border as well, and the remesh follows the ridge and the border
+  const auto remesh = run_with("remesh", { "--sharp-edges", "30", "--dual", (dir / "remesh.off").string() });
+  const std::size_t with_border = std::size_t(stat_value(remesh, "feature_sites"));
+  CHECK(with_border > k + 50);
+  CHECK(stat_value(remesh, "dual_valid") == 1);
+  const Dual_lines lines = dual_lines(dir / "remesh.off", on_ridge, on_border);
+  CHECK(lines.line_length == Approx(1.0).epsilon(1e-9));
+  CHECK(lines.border_vertices_on_border);
+  CHECK(lines.border_length == Approx(2 + 2 * 2 * std::hypot(0.5, 0.3)).epsilon(1e-9));
+  // no breakline and no remesh: every site drawn
+  const Run random = run_program(dir, { mesh, "--random", "300", "--seed", "1", "--metric", "euclidean", "--stats" });
+  check_success(random);
+  CHECK(parse_stats(random.out).count("feature_sites") == 0);   // no breakline, no remesh: all drawn
+
+  // sites read from a file are never added to, breaklines or not
+  const Run from_file = run_program(dir, { mesh, "--sites", (dir / "remesh.xyz").string(), "--metric", "euclidean",
+                                           "--sharp-edges", "30", "--dual", (dir / "again.off").string(), "--stats" });
+  check_success(from_file);
+  CHECK(stat_value(parse_stats(from_file.out), "sites") == 300);
+  CHECK(parse_stats(from_file.out).count("feature_sites") == 0);
+  CHECK(same_files(dir / "remesh.off", dir / "again.off"));
+
+  // the lines alone would take all the sites: say so
+  check_one_line_error(run_program(dir, { mesh, "--blue-noise", "6", "--sharp-edges", "30", "--dual", (dir / "few.off").string() }), 2);
+  CHECK(!fs::exists(dir / "few.off"));
 }
 
 // --curvature-density on a torus (R = 1, r = 0.4): its outer equator bends four times as much

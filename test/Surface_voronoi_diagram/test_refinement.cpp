@@ -78,6 +78,34 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
   CHECK(num_vertices(tiny_mesh) <= 100);
 }
 
+TEST_CASE("refinement: a site exactly on an input edge or vertex stays exactly on one of the refined mesh", "[refinement]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 10, 5);
+  // points at irrational fractions of edges (so that the splits do not meet them), and at vertices
+  std::vector<Location<Mesh> > sites;
+  std::size_t k = 0;
+  for(auto f : faces(m))
+  {
+    if(k % 7 == 0) sites.emplace_back(f, std::array<double, 3>{{ 0., 1 / std::sqrt(2.), 1 - 1 / std::sqrt(2.) }});
+    if(k % 7 == 3) sites.emplace_back(f, std::array<double, 3>{{ 0., 0., 1. }});
+    ++k;
+  }
+  Mesh refined;
+  const auto r = SV::refine_for_sites(m, sites, refined);
+  REQUIRE(r.edges_split > 0);
+  REQUIRE(r.sites.size() == sites.size());
+  std::size_t on_edge = 0;
+  for(std::size_t i = 0; i < sites.size(); ++i)
+  {
+    const auto& b = r.sites[i].second;
+    const std::size_t zeros = (b[0] == 0.) + (b[1] == 0.) + (b[2] == 0.);
+    on_edge += (zeros >= (sites[i].second[0] == 0. && sites[i].second[1] == 0. ? 2u : 1u));
+    CHECK(CGAL::squared_distance(point_of(sites[i], m), point_of(r.sites[i], refined)) < 1e-24);
+  }
+  CHECK(on_edge == sites.size());
+}
+
 TEST_CASE("refinement: on a coarse mesh the geodesic metric needs it", "[refinement][geodesic]")
 {
   Mesh m;

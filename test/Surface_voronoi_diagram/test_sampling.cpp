@@ -51,6 +51,35 @@ TEST_CASE("sampling: blue noise is deterministic, has N sites, and keeps them ap
   CHECK(hi / lo < 4);
 }
 
+TEST_CASE("sampling: blue noise keeps its sites away from placed ones, which it does not return", "[sampling]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 4, 1.0);
+  // 60 sites placed on the equator, then 240 more
+  std::vector<Location<Mesh> > placed;
+  for(const auto& l : SV::random_sites(m, 10000, CGAL::parameters::random_seed(2)))
+    if(std::abs(point_of(l, m).z()) < 0.01 && placed.size() < 60) placed.push_back(l);
+  REQUIRE(placed.size() == 60);
+  auto nearest_to_placed = [&](const std::vector<Location<Mesh> >& ls) {
+    double best = 1e300;
+    for(const auto& l : ls)
+      for(const auto& q : placed)
+        best = (std::min)(best, std::sqrt(CGAL::to_double(CGAL::squared_distance(point_of(l, m), point_of(q, m)))));
+    return best;
+  };
+  const auto free_sites = SV::blue_noise_sites(m, 240, CGAL::parameters::random_seed(5));
+  const auto around = SV::blue_noise_sites(m, 240, SV::parameters::placed_sites(placed, CGAL::parameters::random_seed(5)));
+  REQUIRE(around.size() == 240);
+  for(const auto& l : around)
+    for(const auto& q : placed) CHECK(!(l.first == q.first && l.second == q.second));
+  // 300 sites on the unit sphere are about 0.22 apart: without the placed sites in the
+  // elimination, some land right beside them
+  const double ignoring = nearest_to_placed(free_sites), avoiding = nearest_to_placed(around);
+  INFO("nearest to a placed site: " << ignoring << " ignoring them, " << avoiding << " avoiding them");
+  CHECK(ignoring < 0.05);
+  CHECK(avoiding > 0.08);
+}
+
 namespace {
 // a tetrahedron with its corners at `s` times the unit corners (0, e_x, e_y, e_z)
 Mesh scaled_tetrahedron(double s)

@@ -30,6 +30,7 @@
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/valid_geodesic_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/curvature_density.h>
+#include <CGAL/Surface_voronoi_diagram/feature_sites.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
@@ -124,6 +125,8 @@ struct Arguments
   double sharp_edges = -1;   // --sharp-edges ANGLE (degrees): breaklines where the normals turn more
   double curvature_density = 0;   // --curvature-density R: more sites where the surface bends, up to R times
   int scale = 0;   // the mesh is computed on scaled by 2^-scale (normalization_exponent())
+  // of the sites drawn, those placed on breaklines and the border; -1 when none were looked for
+  long long feature_sites = -1;
 };
 
 const char* usage =
@@ -428,6 +431,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
   std::cout << "mesh_faces: " << faces << "\n"
             << "metric: " << args.metric << "\n"
             << "sites: " << s.sites << "\n"
+
             << "cells: " << s.cells << "\n"
             << "empty_cells: " << s.empty_cells << "\n"
             << "pieces: " << s.pieces << "\n"
@@ -446,6 +450,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "cutting: " << times["cutting"] << "\n"
             << "repair: " << times["repair"] << "\n"
             << "output: " << output << std::endl;
+  if(args.feature_sites >= 0) std::cout << "feature_sites: " << args.feature_sites << "\n";
   if(!dual) return;
   if(args.valid_dual) std::cout << "sites_added: " << sites_added << "\n";
   std::cout << "dual_triangles: " << dual->triangles << "\n"
@@ -559,6 +564,7 @@ int run_main(int argc, char** argv)
       if(sharp[e] && !mesh.is_border(e)) breakline[e] = true;
     mesh.remove_property_map(sharp);
   }
+  const bool has_breaklines = std::any_of(mesh.edges().begin(), mesh.edges().end(), [&](Mesh::Edge_index e) { return breakline[e]; });
   // --curvature-density: sites drawn and relaxed more densely where the surface bends
   std::optional<Mesh::Property_map<Mesh::Vertex_index, double> > density;
   if(args.curvature_density > 0)
@@ -570,6 +576,7 @@ int run_main(int argc, char** argv)
   // sites as surface locations, remembering the sites file's lines for error messages
   std::vector<std::size_t> lines;
   std::vector<Location> locations;
+  std::vector<Location> feature_sites;   // sampled sites on breaklines and the border, first in `locations`
   const double diagonal = [&] {
     const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(mesh);
     return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
@@ -627,13 +634,34 @@ int run_main(int argc, char** argv)
       fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count) + ": more than "
               + std::to_string(per_face_limit) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
               + per_face_advice);
+    // First the sites on the feature lines: the breaklines and, for a remesh (--dual), the
+    // border, evenly spaced for `count` sites in all; then the others, drawn. The feature
+    // sites stay in place under --lloyd.
+    const std::string option = std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count);
+    if(has_breaklines || !args.dual.empty())
+    {
+      const auto on_lines = SV::parameters::sample_border(!args.dual.empty(), CGAL::parameters::edge_is_constrained_map(breakline));
+      try
+      {
+        feature_sites = density ? SV::feature_line_sites(mesh, std::size_t(count), SV::parameters::vertex_density_map(*density, on_lines))
+                                : SV::feature_line_sites(mesh, std::size_t(count), on_lines);
+      }
+      catch(const SV::Input_error& e) { fail(1, args.mesh + ": " + e.what()); }
+      if(feature_sites.size() >= std::size_t(count))
+        fail(2, option + ": the " + (has_breaklines ? (args.dual.empty() ? "breaklines" : "breaklines and the border") : "border")
+                + " alone take " + std::to_string(feature_sites.size()) + " sites at the spacing of " + std::to_string(count)
+                + " sites: ask for more sites");
+    }
+    const std::size_t free_sites = std::size_t(count) - feature_sites.size();
+    if(has_breaklines || !args.dual.empty()) args.feature_sites = static_cast<long long>(feature_sites.size());
     auto draw = [&](const auto& np) {
-      return args.random >= 0 ? SV::random_sites(mesh, static_cast<std::size_t>(args.random), np)
-                              : SV::blue_noise_sites(mesh, static_cast<std::size_t>(args.blue_noise), np);
+      return args.random >= 0 ? SV::random_sites(mesh, free_sites, np)
+                              : SV::blue_noise_sites(mesh, free_sites, SV::parameters::placed_sites(feature_sites, np));
     };
-    const std::vector<Location> drawn = density
-      ? draw(SV::parameters::vertex_density_map(*density, CGAL::parameters::random_seed(args.seed)))
-      : draw(CGAL::parameters::random_seed(args.seed));
+    std::vector<Location> drawn = feature_sites;
+    for(const Location& l : density ? draw(SV::parameters::vertex_density_map(*density, CGAL::parameters::random_seed(args.seed)))
+                                    : draw(CGAL::parameters::random_seed(args.seed)))
+      drawn.push_back(l);
     for(const Location& l : drawn)
     {
       Point q;
@@ -711,9 +739,10 @@ int run_main(int argc, char** argv)
     {
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
+        const auto steps = SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd));
         return density
-          ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, CGAL::parameters::number_of_iterations(args.lloyd)), run)
-          : with_diagram_parameters(choices, CGAL::parameters::number_of_iterations(args.lloyd), run);
+          ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)
+          : with_diagram_parameters(choices, steps, run);
       };
       const SV::Lloyd_result<Mesh> r = with_input_metric(args, mesh, dimension_for(mesh), relax);
       lloyd_energies = r.energies;

@@ -78,6 +78,7 @@ enum max_density_ratio_t { max_density_ratio };
 enum centroid_density_t { centroid_density };
 enum sample_border_t { sample_border };
 enum corner_angle_t { corner_angle };
+enum placed_sites_t { placed_sites };
 } // namespace internal_np
 
 namespace parameters {
@@ -252,6 +253,22 @@ unspecified_type max_density_ratio(const T& value);
 template <class T, class NamedParameters>
 unspecified_type max_density_ratio(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `placed_sites`: sites already placed that
+/// `blue_noise_sites()` keeps its new sites away from (a `std::vector` of face locations).
+template <class T>
+unspecified_type placed_sites(const T& value);
+/// The chain `chain` with `placed_sites(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type placed_sites(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `first_moving_site`: the index of the first
+/// site `lloyd_relaxation()` moves, the ones before it staying in place (`std::size_t`).
+template <class T>
+unspecified_type first_moving_site(const T& value);
+/// The chain `chain` with `first_moving_site(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type first_moving_site(const T& value, const NamedParameters& chain);
+
 /// A chain of named parameters holding `value` as `sample_border`: whether
 /// `feature_line_sites()` counts the border edges of the mesh among its feature lines (`bool`).
 template <class T>
@@ -298,6 +315,7 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(sample_border)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(corner_angle)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(placed_sites)
 // An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
 // density (a std::shared_ptr to a std::vector<double> by internal vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)

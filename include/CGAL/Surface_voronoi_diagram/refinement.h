@@ -341,6 +341,12 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
         best_b = b;
       }
     }
+    // a site exactly on an input edge or vertex (a breakline's sites own both sides of it)
+    // stays exactly on the piece's edge or vertex there, not a rounding error beside it
+    const bool on_input_edge = s.second[0] == 0. || s.second[1] == 0. || s.second[2] == 0.;
+    if(on_input_edge)
+      for(double& c : best_b)
+        if(std::abs(c) < 1e-9) c = 0.;
     r.sites.emplace_back(best, internal::clamped_barycentric(best_b));
   }
   return r;

@@ -297,6 +297,14 @@ random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
 ///       value type convertible to `double` (finite, not negative, not zero on every face)}
 ///     \cgalParamDefault{a uniform density}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::placed_sites}
+///     \cgalParamDescription{sites already placed (such as those of `feature_line_sites()`), not
+///       returned: they take part in the elimination as candidates that are never removed, so
+///       the `n` new locations keep away from them, and the packing radius is that of `n` plus
+///       their number}
+///     \cgalParamType{`std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \pre `tm` has at least one face, or `n == 0`
@@ -313,8 +321,12 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   if(n == 0) return std::vector<Location>();
   const auto vpm = internal::make_double_point_map(
       choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)));
-  const std::vector<Location> candidates = random_sites(tm, 5 * n, np);
+  // the candidates that may be removed, then the placed sites, which stay
+  std::vector<Location> candidates = random_sites(tm, 5 * n, np);
   const std::size_t m = candidates.size();
+  const std::vector<Location> placed = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::placed_sites), std::vector<Location>());
+  candidates.insert(candidates.end(), placed.begin(), placed.end());
+  const std::size_t all = candidates.size();
   std::vector<P> points;
   points.reserve(m);
   // the faces' areas, kept for the density's integral below
@@ -354,32 +366,32 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     for(std::size_t k = 0; k < fs.size(); ++k)
       mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;
     const std::vector<std::array<double, 3> > at_candidates = internal::location_corner_densities(tm, candidates, np);
-    radius_scale.resize(m);
-    for(std::size_t i = 0; i < m; ++i)
+    radius_scale.resize(all);
+    for(std::size_t i = 0; i < all; ++i)
       radius_scale[i] = 1 / std::sqrt(internal::density_at(at_candidates[i], candidates[i].second));
     area = mass;
   }
   // the largest radius of n disks packed on the area (hexagonal packing), as in Yuksel 2015
-  const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n)));
+  const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n + placed.size())));
   const double reach = 2 * r_max;
 
   typedef CGAL::Search_traits_3<K> Base;
   typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<P>::type, Base> Traits;
   typedef CGAL::Kd_tree<Traits> Tree;
   CGAL::Pointer_property_map<P>::type ppm = CGAL::make_property_map(points);
-  Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(m),
+  Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(all),
             typename Tree::Splitter(), Traits(ppm));
   tree.build();
 
-  std::vector<std::vector<std::pair<std::size_t, double> > > neighbours(m);
-  std::vector<double> weight(m, 0.);
+  std::vector<std::vector<std::pair<std::size_t, double> > > neighbours(all);
+  std::vector<double> weight(all, 0.);
   std::vector<std::size_t> found;
   if(!radius_scale.empty())
   {
     // two candidates crowd each other within the sum of their radii: each searches twice its
     // own radius, so the one with the larger radius finds the pair
     std::vector<std::pair<std::size_t, std::size_t> > pairs;
-    for(std::size_t i = 0; i < m; ++i)
+    for(std::size_t i = 0; i < all; ++i)
     {
       found.clear();
       tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach * radius_scale[i], 0., Traits(ppm)));
@@ -396,11 +408,11 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
       neighbours[p.first].emplace_back(p.second, w);
       neighbours[p.second].emplace_back(p.first, w);
     }
-    for(std::size_t i = 0; i < m; ++i)
+    for(std::size_t i = 0; i < all; ++i)
       for(const auto& nw : neighbours[i]) weight[i] += nw.second;
   }
   else
-  for(std::size_t i = 0; i < m; ++i)
+  for(std::size_t i = 0; i < all; ++i)
   {
     found.clear();
     tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach, 0., Traits(ppm)));
@@ -418,7 +430,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   // eliminate the most crowded candidate first; ties to the higher index, for determinism
   std::set<std::pair<double, std::size_t> > heap;
   for(std::size_t i = 0; i < m; ++i) heap.emplace(weight[i], i);
-  std::vector<std::uint8_t> removed(m, 0);
+  std::vector<std::uint8_t> removed(all, 0);
   for(std::size_t left = m; left > n; --left)
   {
     const auto top = std::prev(heap.end());
@@ -428,7 +440,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     for(const auto& nw : neighbours[i])
     {
       const std::size_t j = nw.first;
-      if(removed[j]) continue;
+      if(removed[j] || j >= m) continue;   // a placed site is in no heap
       heap.erase(std::make_pair(weight[j], j));
       weight[j] -= nw.second;
       heap.emplace(weight[j], j);

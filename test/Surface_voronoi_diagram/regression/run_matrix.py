@@ -158,6 +158,11 @@ def entries_for(mesh_name, real):
     if not real:
         for m in ("biharmonic", "euclidean", "geodesic"):
             add("%s/insert" % m, ["--sites", "@sites100", "--metric", m, "--insert-sites"])
+    if not real:
+        # sites drawn on the creases first, kept by Lloyd, and the remesh along them
+        for m in ("biharmonic", "euclidean", "geodesic"):
+            add("%s/features" % m, ["--blue-noise", "300", "--seed", "1", "--metric", m, "--sharp-edges", "45",
+                                    "--lloyd", "3", "--dual", "dual.off"], ("out.ply", "sites.xyz", "dual.off"))
     for m in METRICS if not real else ("biharmonic", "euclidean"):
         add("%s/lloyd" % m, ["--sites", "@sites100", "--metric", m, "--lloyd", "5", "--dual", "dual.off"],
             ("out.ply", "sites.xyz", "dual.off"))
