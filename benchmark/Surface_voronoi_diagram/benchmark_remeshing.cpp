@@ -9,7 +9,10 @@
 //
 //   benchmark_remeshing [--data DIR] [--sites N] [--lloyd K] [--samples S] [--quick] [--valid-dual]
 //                       [--models NAME,...] [--methods RVD,EDBVD,biharmonic,geodesic]
-//                       [--dimension D|auto]
+//                       [--dimension D|auto] [--sharp-edges ANGLE]
+// --sharp-edges: the edges where the normals turn by more than ANGLE degrees are breaklines,
+// and the sites start on them and on the border (feature_line_sites(); blue noise around
+// them, Lloyd keeping them); not for the geodesic metric's opt-in, which has no breaklines.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -20,6 +23,7 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/dual_validity.h>
+#include <CGAL/Surface_voronoi_diagram/feature_sites.h>
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/valid_geodesic_dual_sites.h>
 #include <CGAL/Surface_voronoi_diagram/refinement.h>
@@ -34,6 +38,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Random.h>
 
 #include <algorithm>
@@ -125,15 +130,23 @@ Row dual_row(const std::string& model, const std::string& method, const Mesh& me
   return row;
 }
 
+typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
+
 // `np`: the named parameters of the diagram, for Lloyd's diagrams and the final one
 // `valid_dual`: sites added after Lloyd until the dual is a valid mesh
+// `feature_sites`: placed first and kept by Lloyd, the others drawn around them
 template <class Metric, class NamedParameters>
 Row remesh(const std::string& model, const std::string& method, const Mesh& mesh, Metric& metric,
-           const NamedParameters& np, std::size_t n, std::size_t lloyd, std::size_t samples, double setup, bool valid_dual)
+           const NamedParameters& np, std::size_t n, std::size_t lloyd, std::size_t samples, double setup, bool valid_dual,
+           const std::vector<Location>& feature_sites = std::vector<Location>())
 {
   const auto t0 = std::chrono::steady_clock::now();
-  auto sites = SV::lloyd_relaxation(mesh, metric, SV::blue_noise_sites(mesh, n, CGAL::parameters::random_seed(1)),
-                                    np.number_of_iterations(lloyd)).sites;
+  std::vector<Location> start = feature_sites;
+  for(const Location& l : SV::blue_noise_sites(mesh, n - feature_sites.size(),
+                                               SV::parameters::placed_sites(feature_sites, CGAL::parameters::random_seed(1))))
+    start.push_back(l);
+  auto sites = SV::lloyd_relaxation(mesh, metric, start,
+                                    SV::parameters::first_moving_site(feature_sites.size(), np.number_of_iterations(lloyd))).sites;
   std::size_t added = 0;
   if(valid_dual)
   {
@@ -178,6 +191,7 @@ int main(int argc, char** argv)
   std::size_t n = 3000, lloyd = 10, samples = 100000;
   bool quick = false, valid_dual = false;
   std::string dimension = "10";
+  double sharp_edges = 0;
   std::vector<std::string> only_models, methods = { "RVD", "EDBVD", "biharmonic", "geodesic" };
   auto split = [](const std::string& list) {
     std::vector<std::string> out;
@@ -202,6 +216,7 @@ int main(int argc, char** argv)
     else if(a == "--models") only_models = split(next());
     else if(a == "--methods") methods = split(next());
     else if(a == "--dimension") dimension = next();
+    else if(a == "--sharp-edges") sharp_edges = std::stod(next());
     else { std::cerr << "benchmark_remeshing: error: unknown option '" << a << "'" << std::endl; return 2; }
   }
   if(quick) { n = 500; lloyd = 3; samples = 20000; }
@@ -238,24 +253,40 @@ int main(int argc, char** argv)
   }
 
   std::cout << "# Remeshing by the dual (paper Table 1)\n\n" << n << " blue-noise sites, " << lloyd
-            << " Lloyd iterations" << (valid_dual ? ", then sites added until the dual is valid (add_sites_for_valid_dual; the geodesic metric: add_sites_for_valid_geodesic_dual, on meshes refined for the sites)" : "")
+            << " Lloyd iterations" << (sharp_edges > 0 ? " (the first on the creases of " + std::to_string(int(sharp_edges)) + " degrees, which are breaklines, and on the border)" : std::string())
+            << (valid_dual ? ", then sites added until the dual is valid (add_sites_for_valid_dual; the geodesic metric: add_sites_for_valid_geodesic_dual, on meshes refined for the sites)" : "")
             << ", " << samples << " samples each way; distances / bounding-box diagonal\n\n";
   std::cout << "| model | vertices | method | sites | added | dual triangles | valid | genus (input) | self-intersections | Hausdorff | Chamfer | seconds |\n"
             << "| --- | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: |\n";
   std::map<std::string, std::vector<Row> > by_method;
   for(auto& entry : models)
   {
+    // the creases, as breaklines, and the sites on them and on the border
+    auto crease = entry.second.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+    if(sharp_edges > 0)
+    {
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(entry.second, sharp_edges, crease);
+      for(Mesh::Edge_index e : entry.second.edges())
+        if(entry.second.is_border(e)) crease[e] = false;
+    }
     const Mesh& m = entry.second;
+    const std::vector<Location> features = sharp_edges > 0 ? SV::feature_line_sites(m, n, CGAL::parameters::edge_is_constrained_map(crease))
+                                                            : std::vector<Location>();
+    if(features.size() >= n)
+    {
+      std::cerr << entry.first << ": the feature lines take " << features.size() << " sites, skipped" << std::endl;
+      continue;
+    }
     std::vector<Row> rows;
     try
     {
       auto wanted = [&](const char* method) { return std::find(methods.begin(), methods.end(), method) != methods.end(); };
       SV::Euclidean_embedding<Mesh> xyz(m);
-      const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST);
-      const auto defaults = CGAL::parameters::default_values();
+      const auto rvd = SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST, CGAL::parameters::edge_is_constrained_map(crease));
+      const auto defaults = CGAL::parameters::edge_is_constrained_map(crease);
       // the RVD's cells are not repaired: sites are not added to them
-      if(wanted("RVD")) rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false));
-      if(wanted("EDBVD")) rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual));
+      if(wanted("RVD")) rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false, features));
+      if(wanted("EDBVD")) rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual, features));
       if(wanted("biharmonic"))
       {
         const std::size_t d = (std::min)(dimension == "auto" ? SV::biharmonic_dimension_for_sites(n) : std::stoul(dimension),
@@ -263,14 +294,14 @@ int main(int argc, char** argv)
         const auto t = std::chrono::steady_clock::now();
         CGAL::Biharmonic_embedding<Mesh> bh(m, SV::parameters::embedding_dimension(d));
         const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-        rows.push_back(remesh(entry.first, biharmonic_label(dimension, d), m, bh, defaults, n, lloyd, samples, setup, valid_dual));
+        rows.push_back(remesh(entry.first, biharmonic_label(dimension, d), m, bh, defaults, n, lloyd, samples, setup, valid_dual, features));
       }
       if(wanted("geodesic") && valid_dual)
         rows.push_back(remesh_geodesic_valid(entry.first, m, n, lloyd, samples));
       else if(wanted("geodesic"))
       {
         SV::Geodesic_metric<Mesh> geodesic(m);
-        rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., false));
+        rows.push_back(remesh(entry.first, "geodesic", m, geodesic, defaults, n, lloyd, samples, 0., false, features));
       }
     }
     catch(const std::exception& e)

@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <CGAL/Biharmonic_embedding.h>
@@ -15,6 +16,7 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
+#include <CGAL/Surface_voronoi_diagram/feature_sites.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
@@ -220,6 +222,53 @@ void remeshing_figure(const std::string& dir)
   save(dir, "svd_remeshing.png", beside({svd_figures::render_diagram(diagram, cells), dual_image}));
 }
 
+// Remeshing that keeps the creases: a thin-walled open box remeshed by the dual of 300 blue-noise sites after
+// five Lloyd steps, without (left) and with (right) sites on its creases (feature_line_sites()).
+void feature_remeshing_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_shape(GEN::Shape::box, mesh);
+  auto crease = mesh.add_property_map<Mesh::Edge_index, bool>("e:crease", false).first;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(mesh, 60., crease);
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const std::size_t n = 300;
+  auto dual_of = [&](bool features) {
+    const auto lines = CGAL::parameters::edge_is_constrained_map(crease);
+    std::vector<Location> sites = features ? SV::feature_line_sites(mesh, n, lines) : std::vector<Location>();
+    const std::size_t fixed = sites.size();
+    for(const Location& l : SV::blue_noise_sites(mesh, n - fixed, SV::parameters::placed_sites(sites, CGAL::parameters::random_seed(1))))
+      sites.push_back(l);
+    std::vector<K::Point_3> points;
+    std::vector<std::array<std::size_t, 3> > triangles;
+    if(features)
+    {
+      const auto relaxed = SV::lloyd_relaxation(mesh, metric, sites, SV::parameters::first_moving_site(fixed, lines.number_of_iterations(5)));
+      SV::dual_triangulation(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, relaxed.sites, lines),
+                             std::back_inserter(points), std::back_inserter(triangles));
+    }
+    else
+    {
+      const auto relaxed = SV::lloyd_relaxation(mesh, metric, sites, CGAL::parameters::number_of_iterations(5));
+      SV::dual_triangulation(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, relaxed.sites),
+                             std::back_inserter(points), std::back_inserter(triangles));
+    }
+    Mesh dual;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, dual);
+    return dual;
+  };
+  Render_options flat = panel(316, 280, {{-0.5, -0.9, -1.4}});
+  flat.crease_angle = 30;
+  flat.site_radius = 0;
+  flat.edge_width = 1.0;
+  std::vector<Image> panels;
+  for(bool features : { false, true })
+    panels.push_back(svd_figures::render_arrangement(dual_of(features), CGAL::Constant_property_map<Mesh::Face_index, int>(0),
+                                                     std::vector<K::Point_3>(), flat,
+                                                     CGAL::parameters::edge_is_constrained_map(
+                                                         CGAL::Constant_property_map<Mesh::Edge_index, bool>(true))));
+  save(dir, "svd_feature_remeshing.png", beside(panels));
+}
+
 // The cells out as a polygon mesh, as polylines and Voronoi vertices, and as labels of the
 // input's faces: one figure each, all on the same torus diagram.
 typedef CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > Euclidean_diagram;
@@ -343,6 +392,7 @@ int main(int argc, char** argv)
     breaklines_figure(dir);
     lloyd_figure(dir);
     remeshing_figure(dir);
+    feature_remeshing_figure(dir);
     cell_output_figures(dir);
   }
   catch(const std::exception& e)
