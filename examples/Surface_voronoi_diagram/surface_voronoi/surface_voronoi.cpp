@@ -431,7 +431,6 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
   std::cout << "mesh_faces: " << faces << "\n"
             << "metric: " << args.metric << "\n"
             << "sites: " << s.sites << "\n"
-
             << "cells: " << s.cells << "\n"
             << "empty_cells: " << s.empty_cells << "\n"
             << "pieces: " << s.pieces << "\n"
@@ -630,15 +629,16 @@ int run_main(int argc, char** argv)
   {
     // a face cannot hold more than max_sites_per_face sites: fail before drawing them
     const long long count = args.random >= 0 ? args.random : args.blue_noise;
+    const std::string option = std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count);
     if(std::size_t(count) > per_face_limit * num_faces(mesh))
-      fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count) + ": more than "
+      fail(2, option + ": more than "
               + std::to_string(per_face_limit) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
               + per_face_advice);
     // First the sites on the feature lines: the breaklines and, for a remesh (--dual), the
     // border, evenly spaced for `count` sites in all; then the others, drawn. The feature
     // sites stay in place under --lloyd.
-    const std::string option = std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count);
-    if(has_breaklines || !args.dual.empty())
+    const bool on_feature_lines = has_breaklines || !args.dual.empty();
+    if(on_feature_lines)
     {
       const auto on_lines = SV::parameters::sample_border(!args.dual.empty(), CGAL::parameters::edge_is_constrained_map(breakline));
       try
@@ -653,7 +653,7 @@ int run_main(int argc, char** argv)
                 + " sites: ask for more sites");
     }
     const std::size_t free_sites = std::size_t(count) - feature_sites.size();
-    if(has_breaklines || !args.dual.empty()) args.feature_sites = static_cast<long long>(feature_sites.size());
+    if(on_feature_lines) args.feature_sites = static_cast<long long>(feature_sites.size());
     auto draw = [&](const auto& np) {
       return args.random >= 0 ? SV::random_sites(mesh, free_sites, np)
                               : SV::blue_noise_sites(mesh, free_sites, SV::parameters::placed_sites(feature_sites, np));

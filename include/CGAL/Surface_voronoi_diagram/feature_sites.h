@@ -200,7 +200,6 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
                                             CGAL::Constant_property_map<edge_descriptor, bool>(false));
   const bool with_border = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::sample_border), true);
   const double corner_degrees = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::corner_angle), 60.);
-  const std::size_t none = std::size_t(-1);
 
   // vertices and edges by index (their position in vertices(tm) and edges(tm))
   std::vector<vertex_descriptor> vertex_handles(vertices(tm).begin(), vertices(tm).end());
@@ -333,20 +332,10 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   }
   std::sort(chains.begin(), chains.end(), [](const Chain& a, const Chain& b) { return a.smallest_edge < b.smallest_edge; });
 
-  // the locations: at a vertex, and at parameter t from `from` to `to` on edge k
-  auto vertex_location = [&](std::size_t v) {
-    const vertex_descriptor vd = vertex_handles[v];
-    halfedge_descriptor h = halfedge(vd, tm);
-    for(halfedge_descriptor g : CGAL::halfedges_around_target(halfedge(vd, tm), tm))
-      if(!CGAL::is_border(g, tm)) { h = g; break; }
-    const face_descriptor f = face(h, tm);
-    const halfedge_descriptor h0 = halfedge(f, tm);
-    const std::array<vertex_descriptor, 3> corner = {{ source(h0, tm), target(h0, tm), target(next(h0, tm), tm) }};
-    std::array<double, 3> b = {{ 0., 0., 0. }};
-    for(int i = 0; i < 3; ++i)
-      if(corner[i] == vd) b[i] = 1.;
-    return Location(f, b);
-  };
+  // the locations: at a vertex, and at parameter t from `from` to the other end of edge k
+  // (not PMP::locate_on_halfedge(), which would give 1 - (1 - t) where the face's halfedge
+  // runs the other way: not t to the last bit)
+  auto vertex_location = [&](std::size_t v) { return CGAL::Polygon_mesh_processing::locate_vertex<double>(vertex_handles[v], tm); };
   auto edge_location = [&](std::size_t k, std::size_t from, double t) {
     halfedge_descriptor h = halfedge(edge_handles[k], tm);
     if(CGAL::is_border(h, tm)) h = opposite(h, tm);

@@ -163,17 +163,12 @@ Cell_components cell_components(const Indexed_mesh<TriangleMesh>& mesh, const Pa
   // a site on a breakline: its pieces around its location are one component through it
   if(breakline_site_faces)
   {
-    auto piece_of = [&](std::size_t f, std::size_t site) {
-      for(std::size_t p = partition.face_begin[f]; p < partition.face_begin[f + 1]; ++p)
-        if(partition.pieces[p].site == site) return p;
-      return no_site;
-    };
     std::size_t first = no_site;
     for(std::size_t k = 0; k < breakline_site_faces->size(); ++k)
     {
       const std::pair<std::size_t, std::size_t>& x = (*breakline_site_faces)[k];
       if(k == 0 || x.first != (*breakline_site_faces)[k - 1].first) first = no_site;
-      const std::size_t p = piece_of(x.second, x.first);
+      const std::size_t p = partition.piece_of(x.second, x.first);
       if(p == no_site) continue;
       if(first == no_site) first = p;
       else pieces_of_a_cell.unite(first, p);

@@ -55,8 +55,8 @@ private:
 inline std::size_t principal_component(const Site& site, std::size_t i, const Partition& partition,
                                        const Cell_components& components)
 {
-  for(std::size_t p = partition.face_begin[site.face]; p < partition.face_begin[site.face + 1]; ++p)
-    if(partition.pieces[p].site == i) return components.piece_component[p];
+  const std::size_t own = partition.piece_of(site.face, i);
+  if(own != no_site) return components.piece_component[own];
   std::size_t best = components.site_components[i].front();
   for(std::size_t c : components.site_components[i])
     if(components.component_area[c] > components.component_area[best]) best = c;

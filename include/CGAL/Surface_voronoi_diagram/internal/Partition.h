@@ -61,6 +61,14 @@ struct Partition
   std::size_t inserted_vertices = 0;
   std::size_t dropped_pieces = 0;          // pieces left without area by welding or collinear
 
+  /// the piece of `site` in face `f`, or no_site
+  std::size_t piece_of(std::size_t f, std::size_t site) const
+  {
+    for(std::size_t p = face_begin[f]; p < face_begin[f + 1]; ++p)
+      if(pieces[p].site == site) return p;
+    return no_site;
+  }
+
   /// face_begin again after pieces were removed (faces left without a piece get an empty range)
   void rebuild_face_begin(std::size_t number_of_faces)
   {
