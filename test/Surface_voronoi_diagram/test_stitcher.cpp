@@ -513,6 +513,7 @@ namespace {
 // across the folds and leave cells in several pieces.
 struct Folded_grid_fields
 {
+  static constexpr bool concurrent_values = true;   // so that the propagation may run in blocks
   const std::vector<std::vector<double> >* field;
   double value(std::size_t site, std::size_t v) const { return (*field)[site][v]; }
 };
@@ -559,13 +560,15 @@ struct Folded_grid_propagation
   Folded_grid_fields fields{ nullptr };
   std::unique_ptr<SVI::Propagation<St_mesh, Folded_grid_fields, Blocked> > propagation;
 
-  Folded_grid_propagation(double amplitude, std::size_t number_of_sites, std::mt19937& rng)
+  /// `faces_per_block`: if not 0, the first propagation runs in blocks of that many faces
+  Folded_grid_propagation(double amplitude, std::size_t number_of_sites, std::mt19937& rng, std::size_t faces_per_block = 0)
   {
     folded_grid_sites(amplitude, number_of_sites, rng, r, located, site_faces);
     fields.field = &r.field;
     const St_indexed* mesh = &r.mesh;
     propagation.reset(new SVI::Propagation<St_mesh, Folded_grid_fields, Blocked>(r.mesh, fields, site_faces, breakline_site_faces,
         Blocked([mesh](std::size_t f, int k) { return folded_grid_blocked_edge(mesh->edges[f][k]); })));
+    if(faces_per_block > 0) propagation->set_block_sizes(faces_per_block, 1);
     propagation->run();
     std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
     std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
@@ -584,32 +587,40 @@ struct Folded_grid_propagation
 // the same broken cells, regions per site and orphans, in the same order.
 TEST_CASE("cell check: the first round, from the propagation's links, finds what the full check finds", "[stitcher][repair]")
 {
-  std::mt19937 rng(5);
-  int decided = 0, with_broken = 0;
-  for(int trial = 0; trial < 40; ++trial)
+  // in one global order, and in blocks of 24 faces (the links then cross blocks, and fields
+  // admitted before a dominating one arrived from another block break more of them)
+  for(std::size_t faces_per_block : { std::size_t(0), std::size_t(24) })
   {
-    INFO("trial " << trial);
-    Folded_grid_propagation grid(1.5 + 0.1 * trial, 6 + trial % 10, rng);
-    St_run& r = grid.r;
-    const std::vector<SVI::Site>& located = grid.located;
-    auto& propagation = *grid.propagation;
+    INFO("faces per block: " << faces_per_block);
+    std::mt19937 rng(5);
+    int decided = 0, with_broken = 0, in_blocks = 0;
+    for(int trial = 0; trial < 40; ++trial)
+    {
+      INFO("trial " << trial);
+      Folded_grid_propagation grid(1.5 + 0.1 * trial, 6 + trial % 10, rng, faces_per_block);
+      St_run& r = grid.r;
+      const std::vector<SVI::Site>& located = grid.located;
+      auto& propagation = *grid.propagation;
+      in_blocks += (propagation.statistics.blocks > 1 && propagation.statistics.rounds > 1);
 
-    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
-    std::size_t broken = 0, quick_broken = 0;
-    std::vector<std::pair<std::size_t, std::size_t> > orphans, quick_orphans;
-    std::vector<std::size_t> regions, quick_regions;
-    const bool quick = check.run_from_links(located, folded_grid_blocked_edge, quick_broken, quick_orphans, quick_regions, false);
-    if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
-    if(!quick) continue;
-    ++decided;
-    CHECK(quick_broken == broken);
-    CHECK(quick_regions == regions);
-    CHECK(quick_orphans == orphans);
-    with_broken += (broken > 0);
+      SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
+      std::size_t broken = 0, quick_broken = 0;
+      std::vector<std::pair<std::size_t, std::size_t> > orphans, quick_orphans;
+      std::vector<std::size_t> regions, quick_regions;
+      const bool quick = check.run_from_links(located, folded_grid_blocked_edge, quick_broken, quick_orphans, quick_regions, false);
+      if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
+      if(!quick) continue;
+      ++decided;
+      CHECK(quick_broken == broken);
+      CHECK(quick_regions == regions);
+      CHECK(quick_orphans == orphans);
+      with_broken += (broken > 0);
+    }
+    // the trials must exercise it: most decide, and many of those have broken cells
+    CHECK(decided >= 30);
+    CHECK(with_broken >= 10);
+    CHECK(in_blocks == (faces_per_block > 0 ? 40 : 0));
   }
-  // the trials must exercise it: most decide, and many of those have broken cells
-  CHECK(decided >= 30);
-  CHECK(with_broken >= 10);
 }
 
 // The later rounds' check (Symbolic_cell_check::run_on_sites(): only the sites on the faces a
@@ -622,7 +633,8 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
   for(int trial = 0; trial < 120; ++trial)
   {
     INFO("trial " << trial);
-    Folded_grid_propagation grid(1.5 + 0.03 * trial, 8 + trial % 25, rng);
+    // odd trials propagate in blocks: the repair then starts from offers rebuilt from the lists
+    Folded_grid_propagation grid(1.5 + 0.03 * trial, 8 + trial % 25, rng, trial % 2 ? 24 : 0);
     St_run& r = grid.r;
     const std::vector<SVI::Site>& located = grid.located;
     auto& propagation = *grid.propagation;

@@ -137,12 +137,15 @@ TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on an
   typedef CGAL::Surface_voronoi_diagram<Mesh, Biharmonic, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel;
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Sequential_euclidean;
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel_euclidean;
-  std::vector<Mesh> ms(3);
+  // The last mesh is large enough for the propagation to run in blocks.
+  std::vector<Mesh> ms(4);
   GEN::Lampshade_options lo;
   lo.target_vertices = 12000;
   GEN::make_thin_lampshade(ms[0], lo);
   GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
   GEN::make_planar_grid(ms[2], 120, 100, 1.0, 0.8, 0., 0);
+  lo.target_vertices = 36000;
+  GEN::make_thin_lampshade(ms[3], lo);
   for(std::size_t k = 0; k < ms.size(); ++k)
   {
     INFO("mesh " << k << ", " << num_faces(ms[k]) << " faces");
@@ -155,6 +158,8 @@ TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on an
     Euclidean euclidean(ms[k]);
     const Sequential a(ms[k], metric, random_sites);
     const Sequential_euclidean e(ms[k], euclidean, lattice);
+    CHECK((a.statistics().propagation_blocks > 1) == (k == 3));
+    CHECK(a.statistics().broken_cells == 0);
     for(int threads : { 1, 2, 4 })
     {
       INFO(threads << " threads");
@@ -218,6 +223,45 @@ TEST_CASE("diagram: four sites around a grid vertex tie there", "[diagram][ties]
   check_invariants(vd);
   for(std::size_t i = 0; i < 4; ++i)
     CHECK(vd.cell_area(i) == Approx(0.25).epsilon(1e-12));
+}
+
+TEST_CASE("diagram: the propagation in blocks gives the brute-force nearest site where cells are whole", "[diagram][blocks]")
+{
+  // A torus of 72,000 faces and 800 sites: the propagation runs in blocks (rounds in which
+  // fields cross from block to block). On a smooth surface whose cells are all whole, the
+  // Euclidean cells are the restricted Voronoi diagram's: each point is labelled with its
+  // nearest site.
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.3, 300, 120);
+  REQUIRE(num_faces(m) >= 4 * 16384);
+  Euclidean e(m);
+  const auto sites = area_uniform_locations(m, 800, 23);
+  CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites);
+  CHECK(vd.statistics().propagation_blocks >= 4);
+  CHECK(vd.statistics().propagation_rounds >= 2);
+  CHECK(vd.statistics().broken_cells == 0);
+  std::vector<Point> sp;
+  for(const auto& s : sites) sp.push_back(point_of(s, m));
+  std::size_t wrong = 0, checked = 0;
+  for(const auto& l : area_uniform_locations(m, 6000, 77))
+  {
+    const Point p = point_of(l, m);
+    std::vector<std::pair<double, std::size_t> > d;
+    for(std::size_t i = 0; i < sp.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, sp[i])), i);
+    std::partial_sort(d.begin(), d.begin() + 2, d.end());
+    if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;   // a tie within rounding
+    ++checked;
+    wrong += (vd.site_of(l) != d[0].second);
+  }
+  CHECK(checked > 5900);
+  CHECK(wrong == 0);
+  double sum = vd.unreached_area();
+  for(std::size_t i = 0; i < vd.number_of_sites(); ++i)
+  {
+    sum += vd.cell_area(i);
+    CHECK(vd.site_of(sites[i]) == i);   // each site owns its own location
+  }
+  CHECK(sum == Approx(CGAL::to_double(CGAL::Polygon_mesh_processing::area(m))).epsilon(1e-9));
 }
 
 TEST_CASE("diagram: RVD labels equal the brute-force nearest site", "[diagram][rvd]")

@@ -54,6 +54,12 @@ struct Diagram_statistics
   std::size_t propagation_events = 0;
   /// the fields admitted into a face's candidate list
   std::size_t admitted_fields = 0;
+  /// the blocks of faces the first propagation ran in (1: one global order; see the manual's
+  /// section on parallel runs)
+  std::size_t propagation_blocks = 1;
+  /// the rounds in which the blocks exchanged the fields that crossed between them (1 in one
+  /// global order)
+  std::size_t propagation_rounds = 1;
   /// the mean length of a face's candidate list
   double mean_candidates_per_face = 0;
   /// the longest candidate list

@@ -47,7 +47,7 @@ struct Builder_settings
   bool repair = true;
   std::size_t max_repair_rounds = 100;
   bool has_weights = false;
-  bool parallel = false;   // cutting, stitching and checking in concurrent chunks (TBB)
+  bool parallel = false;   // propagation blocks, cutting, stitching and checking in concurrent chunks (TBB)
   bool cells_only = false; // no vertex owners (Lloyd's diagrams)
 };
 
@@ -78,7 +78,8 @@ public:
     d.statistics.sites = n;
     d.statistics.surface_area = m_mesh.total_area;
 
-    Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked);
+    Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked,
+                                                                         m_settings.parallel);
     if(global_nearest)
       find_global_nearest(propagation.candidates);
     else
@@ -91,6 +92,8 @@ public:
     cut_faces(propagation.candidates, nullptr);
     d.statistics.propagation_events = propagation.statistics.events;
     d.statistics.admitted_fields = propagation.statistics.admitted;
+    d.statistics.propagation_blocks = propagation.statistics.blocks;
+    d.statistics.propagation_rounds = propagation.statistics.rounds;
     m_timer.stop("cutting");
     if(!progress(0.7)) return false;
 

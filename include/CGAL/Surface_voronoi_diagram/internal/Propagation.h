@@ -12,6 +12,15 @@
 // Propagation (SurfaceVoronoi, stage 1): for every face, the sites whose distance field can
 // win somewhere in it. A site's field enters a face only from a face where it was admitted,
 // so a site never appears on the far side of a wall it cannot reach along the surface.
+//
+// On large meshes with many sites and a metric whose values can be read concurrently, the
+// first propagation runs block by block (Face_blocks.h), in rounds: each block drains its own
+// queue, and what leaves it waits in the block's outbox for the next round, when each block
+// takes what was sent to it, in block order. The rounds and their order depend on the blocks
+// alone, so a run on any number of threads gives the same candidates. A field admitted in a
+// block before a field that dominates it arrived from another block stays admitted (lists only
+// grow) and may go on a little further than in one global order: a cell can then come out in
+// pieces, which the repair mends as it mends any other.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PROPAGATION_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_PROPAGATION_H
@@ -19,13 +28,16 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <queue>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -33,11 +45,27 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
+// Whether `Fields::value()` may be called from several threads at once (its
+// `concurrent_values`; false if it does not say).
+template <class Fields, class = void>
+struct Values_are_concurrent : std::false_type {};
+template <class Fields>
+struct Values_are_concurrent<Fields, std::enable_if_t<Fields::concurrent_values> > : std::true_type {};
+
 struct Propagation_statistics
 {
   std::size_t events = 0;
   std::size_t admitted = 0;
   std::size_t pruned = 0;
+  std::size_t blocks = 1;   // the blocks of the first propagation (1: one global order)
+  std::size_t rounds = 1;   // its rounds
+
+  void add(const Propagation_statistics& other)
+  {
+    events += other.events;
+    admitted += other.admitted;
+    pruned += other.pruned;
+  }
 };
 
 /// The propagation and its state, so that the connectivity repair can re-run it locally.
@@ -52,13 +80,40 @@ public:
   /// the number of times a face can be repropagated (the epoch is part of the offer keys)
   static constexpr std::size_t max_epochs = 65536;
 
+  /// The faces of a block of the first propagation, and the sites per block below which it
+  /// runs in one global order: blocks of fewer cells would mostly hold fields that the
+  /// neighbouring blocks' sites dominate.
+  static constexpr std::size_t faces_per_block = 16384;
+  static constexpr std::size_t sites_per_block = 64;
+
   /// `breakline_site_faces`: the (site, face) pairs where a site on a breakline starts, its own
-  /// face among them (`Breaklines::faces_of_sites_on_breaklines()`)
+  /// face among them (`Breaklines::faces_of_sites_on_breaklines()`); `parallel`: the blocks of
+  /// the first propagation, if any, run on concurrent threads (same result)
   Propagation(const Mesh& mesh, const Fields& fields, const std::vector<std::size_t>& site_faces,
-              const std::vector<std::pair<std::size_t, std::size_t> >& breakline_site_faces, const Blocked& blocked)
-    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_breakline_site_faces(breakline_site_faces), m_blocked(blocked)
+              const std::vector<std::pair<std::size_t, std::size_t> >& breakline_site_faces, const Blocked& blocked,
+              bool parallel = false)
+    : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_breakline_site_faces(breakline_site_faces), m_blocked(blocked),
+      m_parallel(parallel)
   {
     link_faces();
+  }
+
+  /// Blocks of other sizes than the defaults (before `run()`), so that tests run small meshes
+  /// in blocks.
+  void set_block_sizes(std::size_t faces, std::size_t sites)
+  {
+    CGAL_precondition(faces > 0 && sites > 0);
+    m_faces_per_block = faces;
+    m_sites_per_block = sites;
+  }
+
+  /// The number of blocks the first propagation runs in (1: one global order); blocks need
+  /// values that can be read concurrently.
+  std::size_t number_of_blocks() const
+  {
+    if(!Values_are_concurrent<Fields>::value) return 1;
+    const std::size_t blocks = (std::min)(m_mesh.number_of_faces() / m_faces_per_block, m_site_faces.size() / m_sites_per_block);
+    return blocks >= 4 ? blocks : 1;
   }
 
   Candidate_lists candidates;
@@ -69,12 +124,18 @@ public:
   {
     candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     forget_offers();
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first]) offer(static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
-    auto no_ban = [](std::size_t, std::size_t) { return false; };
-    drain(no_ban, nullptr);
+    const std::size_t blocks = number_of_blocks();
+    if(blocks > 1)
+      run_in_blocks(blocks);
+    else
+    {
+      for(std::size_t i = 0; i < m_site_faces.size(); ++i)
+        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
+      for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+        if(x.second != m_site_faces[x.first]) offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+      auto no_ban = [](std::size_t, std::size_t) { return false; };
+      drain(m_front, no_ban, nullptr);
+    }
     for(Candidate_list& list : candidates) clean_candidate_list(list);
   }
 
@@ -86,7 +147,8 @@ public:
     std::vector<Face_link>().swap(m_links);
     std::vector<std::uint32_t>().swap(m_epoch);
     std::vector<Offers>().swap(m_offers);
-    m_offered = Flat_hash_table<Key_slot<std::uint64_t> >();
+    m_front.offered = Flat_hash_table<Key_slot<std::uint64_t> >();
+    m_offers_complete = false;
   }
 
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
@@ -97,7 +159,9 @@ public:
   void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched,
                    std::vector<std::uint32_t>* sites_before = nullptr)
   {
-    if(m_links.size() != m_mesh.number_of_faces()) restore_working_state();   // released
+    if(m_links.size() != m_mesh.number_of_faces())   // released
+      link_faces();
+    if(!m_offers_complete) restore_offers();
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     m_sites_before = sites_before;
     for(std::size_t f : dirty)
@@ -113,22 +177,22 @@ public:
     }
     for(std::size_t f : dirty)
     {
-      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
+      for(const Candidate& x : candidates[f]) mark_offered(m_front, x.site, f);
       for(int k = 0; k < 3; ++k)
       {
         const std::uint32_t g = m_links[f].neighbor[k];
         if(g == no_link) continue;
         for(const Candidate& x : candidates[g])
-          if(!banned(x.site, f)) offer(x.site, f, static_cast<std::uint8_t>(k));
+          if(!banned(x.site, f)) offer(m_front, x.site, f, static_cast<std::uint8_t>(k));
       }
     }
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
       if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
-        offer(static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
+        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
     for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
       if(x.second != m_site_faces[x.first] && is_touched[x.second] && !banned(x.first, x.second))
-        offer(static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
-    drain(banned, &is_touched);
+        offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+    drain(m_front, banned, &is_touched);
     m_sites_before = nullptr;
     touched.clear();
     for(std::size_t f = 0; f < is_touched.size(); ++f)
@@ -141,7 +205,8 @@ public:
 
 private:
   // Small, so that the heap moves little memory: the field values wait in a slot of
-  // `m_values` (computed once: a lazy metric's values can be expensive), recycled when taken.
+  // `Front::values` (computed once: a lazy metric's values can be expensive), recycled when
+  // taken.
   struct Event
   {
     double key;
@@ -166,6 +231,26 @@ private:
       return a.face > b.face;
     }
   };
+  // A field offered across an edge into another block: its values at the edge's two corners
+  // (those of the face it leaves), the third computed by the receiving block if it takes it.
+  struct Crossing
+  {
+    std::array<double, 3> value;   // value[fresh] not yet computed
+    std::uint32_t site;
+    std::uint32_t face;
+    std::uint8_t fresh;            // the corner of `face` not on the edge
+  };
+  // What one order of events works with: the whole mesh's, or one block's in a round.
+  struct Front
+  {
+    std::priority_queue<Event, std::vector<Event>, Later> queue;
+    std::vector<std::array<double, 3> > values;
+    std::vector<std::uint32_t> free_slots;
+    Flat_hash_table<Key_slot<std::uint64_t> > offered;   // the offers beyond a face's inline ones
+    Propagation_statistics statistics;
+    std::uint32_t block = 0;
+    std::vector<Crossing> outbox;                        // in blocks: the fields leaving the block
+  };
 
   std::uint64_t key(std::uint32_t site, std::size_t face) const
   {
@@ -173,13 +258,13 @@ private:
   }
 
   // records that `site` was offered to `f` in its current epoch; false if it already was
-  bool mark_offered(std::uint32_t site, std::size_t f)
+  bool mark_offered(Front& front, std::uint32_t site, std::size_t f)
   {
     Offers& o = m_offers[f];
     const std::size_t inline_count = (std::min)(std::size_t(o.count), o.site.size());
     for(std::size_t i = 0; i < inline_count; ++i)
       if(o.site[i] == site) return false;
-    if(o.count >= o.site.size() && !m_offered.insert(key(site, f)).second) return false;
+    if(o.count >= o.site.size() && !front.offered.insert(key(site, f)).second) return false;
     if(o.count < o.site.size()) o.site[o.count] = site;
     ++o.count;
     return true;
@@ -208,12 +293,12 @@ private:
   // stays dominated while the face is not repaired (its list only grows, and dominance is
   // transitive): marking the candidates alone as offered lets the repair admit exactly the
   // fields the kept state would have.
-  void restore_working_state()
+  void restore_offers()
   {
-    link_faces();
     forget_offers();
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-      for(const Candidate& x : candidates[f]) mark_offered(x.site, f);
+      for(const Candidate& x : candidates[f]) mark_offered(m_front, x.site, f);
+    m_offers_complete = true;
   }
 
   // every face in epoch 0, nothing offered to it
@@ -222,7 +307,8 @@ private:
     const std::size_t nf = m_mesh.number_of_faces();
     m_epoch.assign(nf, 0);
     m_offers.assign(nf, Offers());
-    m_offered.reset(nf / 8 + 16);
+    m_front.offered.reset(nf / 8 + 16);
+    m_offers_complete = true;
   }
 
   void link_faces()
@@ -246,51 +332,125 @@ private:
       }
   }
 
+  // The first propagation in `count` blocks (see the file's comment). Each block's faces are
+  // touched by that block's front alone; the values are read concurrently.
+  void run_in_blocks(std::size_t count)
+  {
+    m_block_of = face_blocks(m_mesh, count);
+    std::vector<std::size_t> faces_of(count, 0);
+    for(std::uint32_t b : m_block_of) ++faces_of[b];
+    std::vector<Front> fronts(count);
+    for(std::size_t b = 0; b < count; ++b)
+    {
+      fronts[b].block = static_cast<std::uint32_t>(b);
+      fronts[b].offered.reset(faces_of[b] / 8 + 16);
+    }
+    // the sites' starts, each in its face's block, in site order
+    std::vector<std::vector<std::pair<std::uint32_t, std::size_t> > > starts(count);
+    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
+      starts[m_block_of[m_site_faces[i]]].emplace_back(static_cast<std::uint32_t>(i), m_site_faces[i]);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) starts[m_block_of[x.second]].emplace_back(static_cast<std::uint32_t>(x.first), x.second);
+    auto no_ban = [](std::size_t, std::size_t) { return false; };
+    for_each_chunk(count, 1, m_parallel, [&](std::size_t b, std::size_t, std::size_t) {
+      for(const std::pair<std::uint32_t, std::size_t>& x : starts[b]) offer(fronts[b], x.first, x.second, Candidate::at_site);
+      drain(fronts[b], no_ban, nullptr);
+    });
+    std::size_t rounds = 1;
+    std::vector<std::vector<Crossing> > inbox(count);
+    for(;;)
+    {
+      // what each block sent, by receiving block and in the order sent, senders in block order
+      bool sent = false;
+      for(Front& front : fronts)
+      {
+        std::stable_sort(front.outbox.begin(), front.outbox.end(),
+                         [&](const Crossing& a, const Crossing& b) { return m_block_of[a.face] < m_block_of[b.face]; });
+        for(const Crossing& x : front.outbox) inbox[m_block_of[x.face]].push_back(x);
+        sent = sent || !front.outbox.empty();
+        std::vector<Crossing>().swap(front.outbox);
+      }
+      if(!sent) break;
+      ++rounds;
+      for_each_chunk(count, 1, m_parallel, [&](std::size_t b, std::size_t, std::size_t) {
+        if(inbox[b].empty()) return;
+        Front& front = fronts[b];
+        for(const Crossing& c : inbox[b])
+        {
+          if(!mark_offered(front, c.site, c.face)) continue;
+          Candidate x(c.site, c.value, static_cast<std::uint8_t>((c.fresh + 1) % 3));
+          x.value[c.fresh] = m_fields.value(c.site, m_mesh.triangles[c.face][c.fresh]);
+          queue_unless_dominated(front, x, c.face);
+        }
+        std::vector<Crossing>().swap(inbox[b]);
+        drain(front, no_ban, nullptr);
+      });
+    }
+    for(const Front& front : fronts) statistics.add(front.statistics);
+    statistics.blocks = count;
+    statistics.rounds = rounds;
+    std::vector<std::uint32_t>().swap(m_block_of);
+    m_offers_complete = false;   // the blocks' tables of offers went with their fronts
+  }
+
   // Offers the field of `site` to face `f`, once per (site, face) and epoch, as brought across
   // local edge `from_edge` of f.
-  void offer(std::uint32_t site, std::size_t f, std::uint8_t from_edge)
+  void offer(Front& front, std::uint32_t site, std::size_t f, std::uint8_t from_edge)
   {
-    if(!mark_offered(site, f)) return;
+    if(!mark_offered(front, site, f)) return;
     Candidate x(site, field_values(site, f), from_edge);
-    queue_unless_dominated(x, f);
+    queue_unless_dominated(front, x, f);
   }
 
   // Offers the field of the candidate `from` on face `from_face` across the face's local edge
   // k: its values at the two shared corners are taken instead of computed again (the same
   // numbers: the field is a function of the vertex), which spares two of three lookups of a
   // vertex's coordinates; the edge brought across is the one opposite the corner not shared.
-  void offer_across(const Candidate& from, std::size_t from_face, int k)
+  // Into another block, the offer goes to the outbox.
+  void offer_across(Front& front, const Candidate& from, std::size_t from_face, int k)
   {
     const Face_link& l = m_links[from_face];
     const std::size_t f = l.neighbor[k];
-    if(!mark_offered(from.site, f)) return;
     const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
+    if(!m_block_of.empty() && m_block_of[f] != front.block)
+    {
+      Crossing c;
+      c.value[a] = from.value[k];
+      c.value[b] = from.value[(k + 1) % 3];
+      c.value[fresh] = 0.;
+      c.site = from.site;
+      c.face = static_cast<std::uint32_t>(f);
+      c.fresh = static_cast<std::uint8_t>(fresh);
+      front.outbox.push_back(c);
+      return;
+    }
+    if(!mark_offered(front, from.site, f)) return;
     Candidate x(from.site, {{ 0., 0., 0. }}, static_cast<std::uint8_t>((fresh + 1) % 3));
     x.value[a] = from.value[k];
     x.value[b] = from.value[(k + 1) % 3];
     x.value[fresh] = m_fields.value(from.site, l.fresh_vertex[k]);
-    queue_unless_dominated(x, f);
+    queue_unless_dominated(front, x, f);
   }
 
-  void queue_unless_dominated(const Candidate& x, std::size_t f)
+  void queue_unless_dominated(Front& front, const Candidate& x, std::size_t f)
   {
     // lists only grow: a field dominated now stays dominated, so do not queue it
     for(const Candidate& b : candidates[f])
-      if(dominates(b, x)) { ++statistics.pruned; return; }
+      if(dominates(b, x)) { ++front.statistics.pruned; return; }
     std::uint32_t slot;
-    if(m_free_slots.empty())
+    if(front.free_slots.empty())
     {
-      slot = static_cast<std::uint32_t>(m_values.size());
-      m_values.push_back(x.value);
+      slot = static_cast<std::uint32_t>(front.values.size());
+      front.values.push_back(x.value);
     }
     else
     {
-      slot = m_free_slots.back();
-      m_free_slots.pop_back();
-      m_values[slot] = x.value;
+      slot = front.free_slots.back();
+      front.free_slots.pop_back();
+      front.values[slot] = x.value;
     }
-    m_queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f), slot,
-                        x.from_edge });
+    front.queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f),
+                            slot, x.from_edge });
   }
 
   void record_sites_before(std::size_t f)
@@ -300,31 +460,32 @@ private:
   }
 
   template <class Banned>
-  void drain(const Banned& banned, std::vector<std::uint8_t>* touched)
+  void drain(Front& front, const Banned& banned, std::vector<std::uint8_t>* touched)
   {
-    while(!m_queue.empty())
+    auto& queue = front.queue;
+    while(!queue.empty())
     {
-      const Event e = m_queue.top();
-      m_queue.pop();
-      ++statistics.events;
+      const Event e = queue.top();
+      queue.pop();
+      ++front.statistics.events;
       // the queue jumps across the mesh, so the next event's face is rarely in cache: ask for
       // it now, while this event is processed
-      if(!m_queue.empty())
+      if(!queue.empty())
       {
-        const Event& next = m_queue.top();
+        const Event& next = queue.top();
         prefetch(&candidates[next.face]);
         prefetch(&m_links[next.face]);
-        prefetch(&m_values[next.slot]);
+        prefetch(&front.values[next.slot]);
       }
-      const Candidate x(e.site, m_values[e.slot], e.from_edge);
-      m_free_slots.push_back(e.slot);
+      const Candidate x(e.site, front.values[e.slot], e.from_edge);
+      front.free_slots.push_back(e.slot);
       Candidate_list& list = candidates[e.face];
       bool pruned = false;
       for(const Candidate& b : list)
         if(dominates(b, x)) { pruned = true; break; }
       if(pruned)
       {
-        ++statistics.pruned;
+        ++front.statistics.pruned;
         continue;
       }
       if(touched && !(*touched)[e.face])
@@ -333,7 +494,7 @@ private:
         (*touched)[e.face] = 1;
       }
       list.push_back(x);
-      ++statistics.admitted;
+      ++front.statistics.admitted;
       const Face_link& l = m_links[e.face];
       for(int k = 0; k < 3; ++k)
         if(l.neighbor[k] != no_link)
@@ -342,20 +503,21 @@ private:
           prefetch(&candidates[l.neighbor[k]]);
         }
       for(int k = 0; k < 3; ++k)
-        if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(x, e.face, k);
+        if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
     }
-    release_queue();
+    if(&front == &m_front) statistics.add(front.statistics), front.statistics = Propagation_statistics();
+    release_queue(front);
   }
 
   // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
   // of faces) and would be held through cutting and stitching: a repair's propagation is
   // local and grows its own.
-  void release_queue()
+  static void release_queue(Front& front)
   {
-    CGAL_assertion(m_queue.empty());
-    m_queue = decltype(m_queue)();
-    std::vector<std::array<double, 3> >().swap(m_values);
-    std::vector<std::uint32_t>().swap(m_free_slots);
+    CGAL_assertion(front.queue.empty());
+    front.queue = decltype(front.queue)();
+    std::vector<std::array<double, 3> >().swap(front.values);
+    std::vector<std::uint32_t>().swap(front.free_slots);
   }
 
   // a hint to the processor, which changes nothing else
@@ -373,13 +535,14 @@ private:
   const std::vector<std::size_t>& m_site_faces;
   const std::vector<std::pair<std::size_t, std::size_t> >& m_breakline_site_faces;
   Blocked m_blocked;
+  bool m_parallel;
+  std::size_t m_faces_per_block = faces_per_block, m_sites_per_block = sites_per_block;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
   std::vector<std::uint32_t> m_epoch;
   std::vector<Offers> m_offers;
-  std::vector<std::array<double, 3> > m_values;
-  std::vector<std::uint32_t> m_free_slots;
-  Flat_hash_table<Key_slot<std::uint64_t> > m_offered;
-  std::priority_queue<Event, std::vector<Event>, Later> m_queue;
+  bool m_offers_complete = true;    // false after a run in blocks: `m_offers` misses their tables
+  Front m_front;                    // the global order's (the first propagation's without blocks, the repair's)
+  std::vector<std::uint32_t> m_block_of;   // during a run in blocks
   std::vector<std::uint32_t>* m_sites_before = nullptr;   // during repropagate()
 };
 

@@ -64,6 +64,9 @@ struct Has_indexed_mesh<Metric, decltype(void(std::declval<const Metric&>().inde
 class Embedding_values
 {
 public:
+  /// `value()` reads only: threads may call it at once
+  static constexpr bool concurrent_values = true;
+
   template <class Metric, class TriangleMesh>
   Embedding_values(const Indexed_mesh<TriangleMesh>& mesh, const Metric& metric, const std::vector<Site>& sites)
   {
@@ -124,6 +127,9 @@ class Lazy_values
 {
 public:
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+
+  /// `value()` may fill the metric's caches: one thread at a time
+  static constexpr bool concurrent_values = false;
 
   Lazy_values(const Indexed_mesh<TriangleMesh>& mesh, Metric& metric, const std::vector<Site>& sites)
     : m_mesh(mesh), m_metric(metric)
