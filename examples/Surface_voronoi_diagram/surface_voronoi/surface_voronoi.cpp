@@ -37,6 +37,7 @@
 
 #include <CGAL/IO/OFF.h>
 
+#include "large_blocks.h"
 #include "output_file.h"
 #include "read_checked_mesh.h"
 #include "sites_file.h"
@@ -66,9 +67,6 @@
 #include <memory>
 #include <sstream>
 #include <string>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -947,14 +945,7 @@ int main(int argc, char** argv)
   // A write past a file-size limit must fail with an error the program reports (exit 4), not
   // end the process before it can remove its partial file.
   std::signal(SIGXFSZ, SIG_IGN);
-#if defined(__GLIBC__)
-  // Blocks of 4 MB and more come from the system and go back to it when freed. By default
-  // glibc raises this threshold to 32 MB after the first large block is freed and keeps the
-  // freed blocks below it in its heap, resident: at igea-537k with 10k sites the peak RSS was
-  // 121 MiB higher with the biharmonic metric (918 against 797 MiB), 40 with the geodesic and
-  // 15 with the Euclidean one, for 1-3% less time.
-  mallopt(M_MMAP_THRESHOLD, 4 << 20);
-#endif
+  svd_program::set_large_block_policy();
   try
   {
     return svd_program::run_main(argc, argv);
