@@ -28,6 +28,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -483,6 +484,60 @@ TEST_CASE("IO soup check: a Moebius strip is not orientable", "[io][mesh]")
   REQUIRE_THROWS_WITH(SVIO::check_polygon_soup(points, triangles), Catch::Contains("not orientable"));
   Surface_mesh mesh;
   REQUIRE_THROWS_AS(SVIO::build_checked_triangle_mesh(points, triangles, mesh), SVIO::Input_error);
+}
+
+// The topology check runs with 32-bit indices whenever the soup allows, with 64-bit ones
+// beyond: both must give the same verdict and the same message on every kind of soup.
+TEST_CASE("IO soup check: 32-bit and 64-bit indices give the same verdicts and messages", "[io][mesh]")
+{
+  std::vector<Polygons> soups;
+  soups.push_back(cube_triangles());
+  Polygons flipped = cube_triangles();
+  std::swap(flipped[4][1], flipped[4][2]);   // orientable, not consistently oriented
+  soups.push_back(flipped);
+  soups.push_back({ { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });   // a non-manifold edge
+  Polygons two_tetrahedra;
+  add_tetrahedron(two_tetrahedra, 0, 1, 2, 3);
+  add_tetrahedron(two_tetrahedra, 0, 5, 6, 7);   // sharing vertex 0 only
+  soups.push_back(two_tetrahedra);
+  Polygons moebius;
+  for(std::size_t i = 0; i < 5; ++i)
+  {
+    std::size_t a0 = 2 * i, a1 = 2 * i + 1, b0 = 2 * ((i + 1) % 5), b1 = b0 + 1;
+    if(i == 4)
+      std::swap(b0, b1);
+    moebius.push_back({ a0, b0, b1 });
+    moebius.push_back({ a0, b1, a1 });
+  }
+  soups.push_back(moebius);
+  Polygons open_fan = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 4, 3, 5, 6 } };   // a border and a quad
+  soups.push_back(open_fan);
+  std::vector<std::string> verdicts;
+  for(std::size_t k = 0; k < soups.size(); ++k)
+  {
+    INFO("soup " << k);
+    std::size_t vertices = 0, corners = 0;
+    for(const std::vector<std::size_t>& p : soups[k])
+    {
+      corners += p.size();
+      for(std::size_t v : p) vertices = (std::max)(vertices, v + 1);
+    }
+    std::string narrow, wide;
+    const SVIO::internal::Face_namer name(nullptr, std::string());
+    try { narrow = SVIO::internal::check_soup_topology_with<std::uint32_t>(soups[k], vertices, corners, name) ? "oriented" : "orientable"; }
+    catch(const SVIO::Input_error& e) { narrow = e.what(); }
+    try { wide = SVIO::internal::check_soup_topology_with<std::size_t>(soups[k], vertices, corners, name) ? "oriented" : "orientable"; }
+    catch(const SVIO::Input_error& e) { wide = e.what(); }
+    CHECK(narrow == wide);
+    verdicts.push_back(wide);
+  }
+  // and the soups are what they are meant to be
+  CHECK(verdicts[0] == "oriented");
+  CHECK(verdicts[1] == "orientable");
+  CHECK(verdicts[2] == "edge (0, 1) is non-manifold: shared by 3 faces (0, 1, 2)");
+  CHECK(verdicts[3] == "vertex 0 is non-manifold: its faces form 2 separate fans");
+  CHECK_THAT(verdicts[4], Catch::Contains("not orientable"));
+  CHECK(verdicts[5] == "oriented");
 }
 
 // ------------------------------------------------------- building meshes

@@ -58,6 +58,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -149,19 +150,22 @@ bool has_all_corners_collinear(const std::vector<Point_3>& points, const Polygon
   return true;
 }
 
-// One side of an edge as seen from one polygon. Sorting these by (lo, hi, face)
-// groups the polygons around each undirected edge in a deterministic order,
-// which keeps error messages reproducible, without any hashing.
+// One side of an edge as seen from one polygon, stored in the group of the edge's lower
+// vertex. Sorting a group by (hi, face) orders the polygons around each undirected edge
+// deterministically, which keeps error messages reproducible, without any hashing. Indices
+// are 32-bit when the soup allows (half the memory, which is most of the check's time).
+template <class Index>
 struct Soup_half_edge
 {
-  std::size_t lo, hi, face;
-  std::size_t corner_lo, corner_hi; // the polygon's corners at lo and at hi
-  bool forward;                     // the polygon walks the edge from lo to hi
+  Index hi, face;
+  Index corner_lo, corner_hi; // the polygon's corners at lo and at hi
+  bool forward;               // the polygon walks the edge from lo to hi
 };
 
+template <class Index>
 struct Face_link
 {
-  std::size_t face_a, face_b, lo, hi;
+  Index face_a, face_b, lo, hi;
   bool same_direction;
 };
 
@@ -183,15 +187,16 @@ private:
 
 // Disjoint sets of the indices 0..n-1 in two flat arrays (path halving, union by size):
 // only which elements share a set matters to the callers, not which one represents it.
+template <class Index>
 class Index_union_find
 {
 public:
   explicit Index_union_find(std::size_t n) : parent_(n), size_(n, 1)
   {
     for(std::size_t i = 0; i < n; ++i)
-      parent_[i] = i;
+      parent_[i] = static_cast<Index>(i);
   }
-  std::size_t find(std::size_t i)
+  Index find(Index i)
   {
     while(parent_[i] != i)
     {
@@ -200,7 +205,7 @@ public:
     }
     return i;
   }
-  void unite(std::size_t a, std::size_t b)
+  void unite(Index a, Index b)
   {
     a = find(a);
     b = find(b);
@@ -213,30 +218,23 @@ public:
   }
 
 private:
-  std::vector<std::size_t> parent_, size_;
+  std::vector<Index> parent_, size_;
 };
 
-// Checks what depends only on the indices: every edge has at most two faces,
-// the faces around every vertex form one fan, and the surface is orientable.
-// Returns whether the faces are already consistently oriented.
-template <class PolygonRange>
-bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
+// check_soup_topology() with indices of type Index, large enough for every corner and vertex.
+template <class Index, class PolygonRange>
+bool check_soup_topology_with(const PolygonRange& polygons, std::size_t number_of_vertices,
+                              std::size_t number_of_corners, const Face_namer& name)
 {
-  std::vector<std::size_t> corner_offset(polygons.size() + 1, 0);
-  std::size_t number_of_vertices = 0;
+  std::vector<Index> corner_offset(polygons.size() + 1, 0);
   for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
-    for(std::size_t v : polygons[f])
-      number_of_vertices = (std::max)(number_of_vertices, v + 1);
-  }
-  const std::size_t number_of_corners = corner_offset.back();
+    corner_offset[f + 1] = static_cast<Index>(corner_offset[f] + polygons[f].size());
 
   // Half-edges grouped by their lower vertex with a counting sort (linear, unlike a sort of
   // the whole array), then ordered by (hi, face) within each group: the same order as a
   // sort by (lo, hi, face), so messages name the same elements.
-  std::vector<std::size_t> edge_begin(number_of_vertices + 1, 0);
-  std::vector<std::size_t> corner_begin(number_of_vertices + 1, 0);
+  std::vector<Index> edge_begin(number_of_vertices + 1, 0);
+  std::vector<Index> corner_begin(number_of_vertices + 1, 0);
   for(const auto& polygon : polygons)
   {
     const std::size_t m = polygon.size();
@@ -251,31 +249,40 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     edge_begin[v + 1] += edge_begin[v];
     corner_begin[v + 1] += corner_begin[v];
   }
-  std::vector<Soup_half_edge> half_edges(number_of_corners);
-  std::vector<std::size_t> corners_by_vertex(number_of_corners);
+  std::vector<Soup_half_edge<Index>> half_edges(number_of_corners);
+  std::vector<Index> corners_by_vertex(number_of_corners);
   {
-    std::vector<std::size_t> edge_fill(edge_begin.begin(), edge_begin.end() - 1);
-    std::vector<std::size_t> corner_fill(corner_begin.begin(), corner_begin.end() - 1);
+    std::vector<Index> edge_fill(edge_begin.begin(), edge_begin.end() - 1);
+    std::vector<Index> corner_fill(corner_begin.begin(), corner_begin.end() - 1);
     for(std::size_t f = 0; f < polygons.size(); ++f)
     {
       const std::size_t m = polygons[f].size();
       for(std::size_t j = 0; j < m; ++j)
       {
         const std::size_t u = polygons[f][j], w = polygons[f][(j + 1) % m];
-        const std::size_t cu = corner_offset[f] + j, cw = corner_offset[f] + (j + 1) % m;
+        const Index cu = static_cast<Index>(corner_offset[f] + j), cw = static_cast<Index>(corner_offset[f] + (j + 1) % m);
         corners_by_vertex[corner_fill[u]++] = cu;
         half_edges[edge_fill[(std::min)(u, w)]++] =
-            u < w ? Soup_half_edge{ u, w, f, cu, cw, true } : Soup_half_edge{ w, u, f, cw, cu, false };
+            u < w ? Soup_half_edge<Index>{ static_cast<Index>(w), static_cast<Index>(f), cu, cw, true }
+                  : Soup_half_edge<Index>{ static_cast<Index>(u), static_cast<Index>(f), cw, cu, false };
       }
     }
   }
-  const auto edge_order = [](const Soup_half_edge& a, const Soup_half_edge& b) {
+  std::vector<Index>().swap(corner_offset);
+  const auto edge_order = [](const Soup_half_edge<Index>& a, const Soup_half_edge<Index>& b) {
     return std::tie(a.hi, a.face, a.corner_lo) < std::tie(b.hi, b.face, b.corner_lo);
   };
-  for(std::size_t v = 0; v < number_of_vertices; ++v)
+
+  // Corners of the same vertex are glued across every edge shared by exactly
+  // two faces; the connected classes of corners of a vertex are its fans.
+  Index_union_find<Index> corners(number_of_corners);
+  std::vector<Face_link<Index>> links;
+  links.reserve(number_of_corners / 2);
+  bool consistently_oriented = true;
+  for(std::size_t lo = 0; lo < number_of_vertices; ++lo)
   {
-    const auto first = half_edges.begin() + std::ptrdiff_t(edge_begin[v]);
-    const auto last = half_edges.begin() + std::ptrdiff_t(edge_begin[v + 1]);
+    const auto first = half_edges.begin() + std::ptrdiff_t(edge_begin[lo]);
+    const auto last = half_edges.begin() + std::ptrdiff_t(edge_begin[lo + 1]);
     if(last - first <= 16)
     {
       for(auto i = first; i != last; ++i)   // insertion sort: groups are a vertex's few edges
@@ -284,44 +291,36 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     }
     else
       std::sort(first, last, edge_order);
-  }
-
-  // Corners of the same vertex are glued across every edge shared by exactly
-  // two faces; the connected classes of corners of a vertex are its fans.
-  Index_union_find corners(number_of_corners);
-  std::vector<Face_link> links;
-  links.reserve(number_of_corners / 2);
-  bool consistently_oriented = true;
-  for(std::size_t begin = 0; begin < half_edges.size();)
-  {
-    std::size_t end = begin + 1;
-    while(end < half_edges.size() && half_edges[end].lo == half_edges[begin].lo &&
-          half_edges[end].hi == half_edges[begin].hi)
-      ++end;
-    const std::size_t count = end - begin;
-    if(count > 2)
+    for(auto begin = first; begin != last;)
     {
-      std::ostringstream msg;
-      msg << "edge (" << half_edges[begin].lo << ", " << half_edges[begin].hi
-          << ") is non-manifold: shared by " << count << " faces (";
-      for(std::size_t i = begin; i < end; ++i)
-        msg << (i == begin ? "" : ", ") << name(half_edges[i].face);
-      msg << ")" << name.context();
-      throw Input_error(msg.str());
+      auto end = begin + 1;
+      while(end != last && end->hi == begin->hi)
+        ++end;
+      const std::size_t count = std::size_t(end - begin);
+      if(count > 2)
+      {
+        std::ostringstream msg;
+        msg << "edge (" << lo << ", " << begin->hi << ") is non-manifold: shared by " << count << " faces (";
+        for(auto i = begin; i != end; ++i)
+          msg << (i == begin ? "" : ", ") << name(i->face);
+        msg << ")" << name.context();
+        throw Input_error(msg.str());
+      }
+      if(count == 2)
+      {
+        const Soup_half_edge<Index>& a = *begin;
+        const Soup_half_edge<Index>& b = *(begin + 1);
+        corners.unite(a.corner_lo, b.corner_lo);
+        corners.unite(a.corner_hi, b.corner_hi);
+        links.push_back(Face_link<Index>{ a.face, b.face, static_cast<Index>(lo), a.hi, a.forward == b.forward });
+        if(a.forward == b.forward)
+          consistently_oriented = false;
+      }
+      begin = end;
     }
-    if(count == 2)
-    {
-      const Soup_half_edge& a = half_edges[begin];
-      const Soup_half_edge& b = half_edges[begin + 1];
-      corners.unite(a.corner_lo, b.corner_lo);
-      corners.unite(a.corner_hi, b.corner_hi);
-      links.push_back(Face_link{ a.face, b.face, a.lo, a.hi, a.forward == b.forward });
-      if(a.forward == b.forward)
-        consistently_oriented = false;
-    }
-    begin = end;
   }
-  std::vector<Soup_half_edge>().swap(half_edges);
+  std::vector<Soup_half_edge<Index>>().swap(half_edges);
+  std::vector<Index>().swap(edge_begin);
 
   // one fan per vertex: all its corners in one class
   for(std::size_t v = 0; v < number_of_vertices; ++v)
@@ -329,13 +328,13 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     const std::size_t begin = corner_begin[v], end = corner_begin[v + 1];
     if(begin == end)
       continue;
-    const std::size_t root = corners.find(corners_by_vertex[begin]);
+    const Index root = corners.find(corners_by_vertex[begin]);
     bool one_fan = true;
     for(std::size_t i = begin + 1; i < end && one_fan; ++i)
       one_fan = corners.find(corners_by_vertex[i]) == root;
     if(one_fan)
       continue;
-    std::vector<std::size_t> roots;
+    std::vector<Index> roots;
     for(std::size_t i = begin; i < end; ++i)
       roots.push_back(corners.find(corners_by_vertex[i]));
     std::sort(roots.begin(), roots.end());
@@ -344,47 +343,49 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     msg << "vertex " << v << " is non-manifold: its faces form " << fans << " separate fans" << name.context();
     throw Input_error(msg.str());
   }
+  std::vector<Index>().swap(corners_by_vertex);
+  std::vector<Index>().swap(corner_begin);
 
   // Two-colouring of the face adjacency graph: a face keeps (0) or flips (1)
   // its orientation; a contradiction means no orientation exists at all.
-  std::vector<std::size_t> link_offset(polygons.size() + 1, 0);
-  for(const Face_link& l : links)
+  std::vector<Index> link_offset(polygons.size() + 1, 0);
+  for(const Face_link<Index>& l : links)
   {
     ++link_offset[l.face_a + 1];
     ++link_offset[l.face_b + 1];
   }
   for(std::size_t f = 0; f < polygons.size(); ++f)
     link_offset[f + 1] += link_offset[f];
-  std::vector<std::size_t> adjacency(link_offset.back());
+  std::vector<Index> adjacency(link_offset.back());
   {
-    std::vector<std::size_t> fill(link_offset.begin(), link_offset.end() - 1);
+    std::vector<Index> fill(link_offset.begin(), link_offset.end() - 1);
     for(std::size_t i = 0; i < links.size(); ++i)
     {
-      adjacency[fill[links[i].face_a]++] = i;
-      adjacency[fill[links[i].face_b]++] = i;
+      adjacency[fill[links[i].face_a]++] = static_cast<Index>(i);
+      adjacency[fill[links[i].face_b]++] = static_cast<Index>(i);
     }
   }
   std::vector<signed char> flip(polygons.size(), -1);
-  std::vector<std::size_t> queue;
+  std::vector<Index> queue;
   for(std::size_t seed = 0; seed < polygons.size(); ++seed)
   {
     if(flip[seed] != -1)
       continue;
     flip[seed] = 0;
-    queue.assign(1, seed);
+    queue.assign(1, static_cast<Index>(seed));
     while(!queue.empty())
     {
       const std::size_t f = queue.back();
       queue.pop_back();
       for(std::size_t k = link_offset[f]; k < link_offset[f + 1]; ++k)
       {
-        const Face_link& l = links[adjacency[k]];
+        const Face_link<Index>& l = links[adjacency[k]];
         const std::size_t g = (l.face_a == f) ? l.face_b : l.face_a;
         const signed char wanted = static_cast<signed char>(flip[f] ^ (l.same_direction ? 1 : 0));
         if(flip[g] == -1)
         {
           flip[g] = wanted;
-          queue.push_back(g);
+          queue.push_back(static_cast<Index>(g));
         }
         else if(flip[g] != wanted)
         {
@@ -399,6 +400,26 @@ bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
     }
   }
   return consistently_oriented;
+}
+
+// Checks what depends only on the indices: every edge has at most two faces,
+// the faces around every vertex form one fan, and the surface is orientable.
+// Returns whether the faces are already consistently oriented.
+template <class PolygonRange>
+bool check_soup_topology(const PolygonRange& polygons, const Face_namer& name)
+{
+  std::size_t number_of_vertices = 0, number_of_corners = 0;
+  for(const auto& polygon : polygons)
+  {
+    number_of_corners += polygon.size();
+    for(std::size_t v : polygon)
+      number_of_vertices = (std::max)(number_of_vertices, std::size_t(v) + 1);
+  }
+  // Index must hold every corner, vertex and face, and the counts one past them
+  const std::size_t largest = (std::max)(number_of_corners, number_of_vertices) + 1;
+  if(largest < std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    return check_soup_topology_with<std::uint32_t>(polygons, number_of_vertices, number_of_corners, name);
+  return check_soup_topology_with<std::size_t>(polygons, number_of_vertices, number_of_corners, name);
 }
 
 // Checks of single elements: coordinates, then each face on its own.
