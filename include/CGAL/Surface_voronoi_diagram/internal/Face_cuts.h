@@ -9,11 +9,15 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// The cuts of all the faces of a diagram, in four flat arrays (a record per face, then the
-// pieces, their vertices and their edges' supports) instead of a vector of pieces per face,
-// each with its own inline buffers: on a million-face mesh that was 150 MB, the largest
-// allocation of a diagram, for what fits in about half. The stages read a face's cut through
-// a light view (`operator[]`) with the members of `Face_cut`.
+// The cuts of all the faces of a diagram, in flat arrays (a record per face, then the pieces,
+// their vertices and their edges' supports) instead of a vector of pieces per face, each with
+// its own inline buffers: on a million-face mesh that was 150 MB, the largest allocation of a
+// diagram, for what fits in about half. The pieces, vertices and supports are stored chunk by
+// chunk of faces, each chunk in arrays of exactly its size, filled from a scratch buffer that
+// the next chunk reuses: concurrent chunks then touch no more fresh memory than one sequential
+// pass, and nothing is concatenated (on a virtual machine, first touches of memory cost more
+// than the cutting). The stages read a face's cut through a light view (`operator[]`) with the
+// members of `Face_cut`.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H
@@ -38,7 +42,8 @@ class Face_cuts
 {
   struct Face_record
   {
-    std::uint32_t first_piece = 0;
+    std::uint32_t chunk = 0;
+    std::uint32_t first_piece = 0;        // in its chunk
     std::uint32_t number_of_pieces = 0;   // up to one per candidate, which are not bounded
     bool whole_face = false;
     bool degenerate = false;
@@ -46,8 +51,15 @@ class Face_cuts
   struct Piece_record
   {
     std::uint32_t candidate;
-    std::uint32_t first_vertex;   // into the vertices and the supports alike
+    std::uint32_t first_vertex;   // into the chunk's vertices and supports alike
     std::uint32_t number_of_vertices;
+  };
+  // the pieces of a chunk of faces, each array of exactly its size
+  struct Chunk
+  {
+    std::vector<Piece_record> pieces;
+    std::vector<Symbolic_vertex> vertices;
+    std::vector<Piece_edge_support> supports;
   };
 
 public:
@@ -94,15 +106,15 @@ public:
       std::size_t m_index;
     };
 
-    Pieces(const Face_cuts* cuts, std::size_t first, std::size_t count) : m_cuts(cuts), m_first(first), m_count(count) {}
+    Pieces(const Chunk* chunk, std::size_t first, std::size_t count) : m_chunk(chunk), m_first(first), m_count(count) {}
     std::size_t size() const { return m_count; }
     bool empty() const { return m_count == 0; }
-    Piece operator[](std::size_t i) const { return m_cuts->piece(m_first + i); }
+    Piece operator[](std::size_t i) const { return piece(*m_chunk, m_first + i); }
     iterator begin() const { return iterator(this, 0); }
     iterator end() const { return iterator(this, m_count); }
 
   private:
-    const Face_cuts* m_cuts;
+    const Chunk* m_chunk;   // null for a face without pieces
     std::size_t m_first, m_count;
   };
 
@@ -119,46 +131,47 @@ public:
   Cut operator[](std::size_t f) const
   {
     const Face_record& r = m_faces[f];
-    return Cut{ Pieces(this, r.first_piece, r.number_of_pieces), r.degenerate, r.whole_face };
+    return Cut{ Pieces(r.number_of_pieces == 0 ? nullptr : &m_chunks[r.chunk], r.first_piece, r.number_of_pieces), r.degenerate,
+                r.whole_face };
   }
 
   /// every face without a cut (reached by nobody)
   void reset(std::size_t number_of_faces)
   {
     m_faces.assign(number_of_faces, Face_record());
-    m_pieces.clear();
-    m_vertices.clear();
-    m_supports.clear();
+    m_chunks.clear();
   }
 
   /// Cuts the faces `faces[0 .. count)` (`face(k)` gives the k-th) on their candidate lists,
   /// in concurrent chunks when `parallel`. A face cut again keeps its old pieces in the
-  /// arrays unused (repair rounds cut few faces again); the arrays' layout depends on `faces`
-  /// alone, not on the threads.
+  /// arrays unused (repair rounds cut few faces again); the chunks depend on `faces` alone,
+  /// not on the threads.
   template <class FaceOfIndex>
   void cut(const Candidate_lists& candidates, std::size_t count, const FaceOfIndex& face, bool parallel)
   {
     const std::size_t chunk_size = 8192;
+    const std::size_t first_chunk = m_chunks.size(), chunks = number_of_chunks(count, chunk_size);
+    CGAL_precondition_msg(first_chunk + chunks < std::size_t(0xffffffffu), "too many chunks of cut faces");
+    m_chunks.resize(first_chunk + chunks);
+    const auto cut_chunk = [&](std::size_t begin, std::size_t end, std::size_t c, Buffer& buffer) {
+      buffer.clear();
+      for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffer);
+      store(buffer, first_chunk + c);
+    };
     if(!parallel)
     {
-      // chunk by chunk into one buffer, so that no second copy of the cuts is ever held
       Buffer buffer;
-      for_each_chunk(count, chunk_size, false, [&](std::size_t begin, std::size_t end, std::size_t) {
-        buffer.clear();
-        for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffer);
-        append(buffer);
-      });
+      for_each_chunk(count, chunk_size, false, [&](std::size_t begin, std::size_t end, std::size_t c) { cut_chunk(begin, end, c, buffer); });
       return;
     }
-    std::vector<Buffer> buffers(number_of_chunks(count, chunk_size));
-    for_each_chunk(count, chunk_size, true, [&](std::size_t begin, std::size_t end, std::size_t c) {
-      for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffers[c]);
+    // a scratch buffer per group of chunks, reused by its chunks in turn: the groups do not
+    // depend on the threads, and which buffer a chunk uses changes nothing it stores
+    const std::size_t chunks_per_group = 8;
+    std::vector<Buffer> buffers(number_of_chunks(chunks, chunks_per_group));
+    for_each_chunk(chunks, chunks_per_group, true, [&](std::size_t first, std::size_t last, std::size_t g) {
+      for(std::size_t c = first; c < last; ++c)
+        cut_chunk(c * chunk_size, (std::min)(count, (c + 1) * chunk_size), c, buffers[g]);
     });
-    for(Buffer& b : buffers)
-    {
-      append(b);
-      b = Buffer();   // freed as soon as copied
-    }
   }
 
   /// sets face f's cut to `c` (tests build cuts face by face)
@@ -166,7 +179,8 @@ public:
   {
     Buffer buffer;
     buffer.add(f, c);
-    append(buffer);
+    m_chunks.emplace_back();
+    store(buffer, m_chunks.size() - 1);
   }
 
 private:
@@ -214,36 +228,33 @@ private:
     buffer.add(f, c);
   }
 
-  void append(const Buffer& b)
+  // the chunk's arrays as copies of the buffer's, of exactly their size; its faces' records
+  // (each face belongs to one chunk of a cut, so concurrent chunks write different records)
+  void store(const Buffer& b, std::size_t c)
   {
-    CGAL_precondition_msg(m_vertices.size() + b.vertices.size() < std::size_t(0xffffffffu)
-                          && m_pieces.size() + b.pieces.size() < std::size_t(0xffffffffu),
+    CGAL_precondition_msg(b.vertices.size() < std::size_t(0xffffffffu) && b.pieces.size() < std::size_t(0xffffffffu),
                           "too many cut pieces for 32-bit offsets");
-    const std::uint32_t piece_offset = std::uint32_t(m_pieces.size());
-    const std::uint32_t vertex_offset = std::uint32_t(m_vertices.size());
-    for(const Piece_record& p : b.pieces)
-      m_pieces.push_back(Piece_record{ p.candidate, p.first_vertex + vertex_offset, p.number_of_vertices });
-    m_vertices.insert(m_vertices.end(), b.vertices.begin(), b.vertices.end());
-    m_supports.insert(m_supports.end(), b.supports.begin(), b.supports.end());
+    Chunk& chunk = m_chunks[c];
+    chunk.pieces.assign(b.pieces.begin(), b.pieces.end());
+    chunk.vertices.assign(b.vertices.begin(), b.vertices.end());
+    chunk.supports.assign(b.supports.begin(), b.supports.end());
     for(const auto& fr : b.faces)
     {
       Face_record r = fr.second;
-      r.first_piece += piece_offset;
+      r.chunk = static_cast<std::uint32_t>(c);
       m_faces[fr.first] = r;
     }
   }
 
-  Piece piece(std::size_t p) const
+  static Piece piece(const Chunk& chunk, std::size_t p)
   {
-    const Piece_record& r = m_pieces[p];
-    return Piece{ r.candidate, Span<Symbolic_vertex>(m_vertices.data() + r.first_vertex, r.number_of_vertices),
-                  Span<Piece_edge_support>(m_supports.data() + r.first_vertex, r.number_of_vertices) };
+    const Piece_record& r = chunk.pieces[p];
+    return Piece{ r.candidate, Span<Symbolic_vertex>(chunk.vertices.data() + r.first_vertex, r.number_of_vertices),
+                  Span<Piece_edge_support>(chunk.supports.data() + r.first_vertex, r.number_of_vertices) };
   }
 
   std::vector<Face_record> m_faces;
-  std::vector<Piece_record> m_pieces;
-  std::vector<Symbolic_vertex> m_vertices;
-  std::vector<Piece_edge_support> m_supports;
+  std::vector<Chunk> m_chunks;
 };
 
 } // namespace internal
