@@ -17,6 +17,9 @@
 #include <map>
 #include <unordered_map>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_arrangement {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -221,3 +224,5 @@ TEST_CASE("arrangement: a Polyhedron_3 without ids, as input and as output", "[a
   CHECK(CGAL::is_closed(out));
   CHECK(site.size() == num_faces(out));
 }
+
+} // namespace svd_test_arrangement

@@ -14,6 +14,9 @@
 
 #include <algorithm>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_biharmonic_embedding {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -330,3 +333,5 @@ TEST_CASE("biharmonic dimension: the dimension for n sites resolves them, and on
   }
   CHECK(SV::biharmonic_resolved_sites(10) == 300);
 }
+
+} // namespace svd_test_biharmonic_embedding

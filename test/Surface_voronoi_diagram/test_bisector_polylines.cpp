@@ -13,6 +13,9 @@
 #include <set>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_bisector_polylines {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -272,3 +275,5 @@ TEST_CASE("bisector polylines: the area no site reaches is the second side", "[b
     }
   CHECK(on_the_square == 3);
 }
+
+} // namespace svd_test_bisector_polylines

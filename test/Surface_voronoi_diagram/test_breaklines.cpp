@@ -6,6 +6,9 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <test_meshes.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_breaklines {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -204,3 +207,5 @@ TEST_CASE("breaklines: a site on a breakline owns the nearest points on both sid
   CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > geodesic(m, g, sites, CGAL::parameters::edge_is_constrained_map(line));
   check_labels(geodesic);
 }
+
+} // namespace svd_test_breaklines

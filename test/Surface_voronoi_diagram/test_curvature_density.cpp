@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_curvature_density {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -58,3 +61,5 @@ TEST_CASE("curvature density: the ratio caps sharp creases", "[curvature_density
   CHECK(*std::max_element(capped.begin(), capped.end()) == 5.);
   CHECK(*std::min_element(capped.begin(), capped.end()) == 1.);   // the flat middles of the walls
 }
+
+} // namespace svd_test_curvature_density

@@ -6,6 +6,7 @@
 // for the whole file and in no other: a deprecation warning from any other test or benchmark
 // is one to act on.
 #if defined(__GNUC__)
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 #endif
 
@@ -40,6 +41,9 @@ using CGAL::Surface_voronoi::Lloyd_result;
 #include <string>
 #include <type_traits>
 #include <vector>
+
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_deprecated {
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -407,3 +411,9 @@ TEST_CASE("deprecated: Surface_voronoi::draw() and the old draw header forward t
   CHECK(captured_cerr([&] { SV::draw(vd, "a title"); }) == captured_cerr([&] { CGAL::draw(vd, "a title"); }));
 #endif
 }
+
+} // namespace svd_test_deprecated
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif

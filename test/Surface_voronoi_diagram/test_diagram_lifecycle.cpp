@@ -11,6 +11,9 @@
 #include <memory>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_diagram_lifecycle {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -109,3 +112,5 @@ TEST_CASE("lifecycle: the callback sees the work advance and can cancel", "[life
     CHECK(cut.sites[i].second == three.sites[i].second);
   }
 }
+
+} // namespace svd_test_diagram_lifecycle

@@ -12,6 +12,9 @@
 #include <sstream>
 #include <string>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_draw {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -43,3 +46,5 @@ TEST_CASE("draw: without the Qt viewer it compiles, prints a message and returns
   CHECK(captured_cerr([&] { CGAL::draw(vd, "a title"); }).find("CGAL_USE_BASIC_VIEWER") != std::string::npos);
 #endif
 }
+
+} // namespace svd_test_draw

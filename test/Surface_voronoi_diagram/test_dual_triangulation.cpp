@@ -6,6 +6,9 @@
 #include <test_meshes.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_dual_triangulation {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -57,3 +60,5 @@ TEST_CASE("dual: a planar patch gives the Delaunay triangles of the sites, a mes
       CHECK(CGAL::side_of_bounded_circle(a, b, c, K::Point_2(p.x(), p.y())) != CGAL::ON_BOUNDED_SIDE);
   }
 }
+
+} // namespace svd_test_dual_triangulation

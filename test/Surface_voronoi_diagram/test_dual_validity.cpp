@@ -11,6 +11,9 @@
 
 #include <cmath>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_dual_validity {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -162,3 +165,5 @@ TEST_CASE("dual validity: a triangle reversed, doubled or removed is found and n
     CHECK(r.degenerate_triangles == 1);
   }
 }
+
+} // namespace svd_test_dual_validity

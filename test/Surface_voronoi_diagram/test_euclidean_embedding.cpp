@@ -7,6 +7,9 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <test_meshes.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_euclidean_embedding {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -98,3 +101,5 @@ TEST_CASE("euclidean: labels on a planar patch equal the nearest site", "[euclid
   }
   CHECK(wrong == 0);
 }
+
+} // namespace svd_test_euclidean_embedding

@@ -11,6 +11,9 @@
 #include <cstdint>
 #include <random>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_exact_predicates {
+
 namespace {
 
 namespace SVI = CGAL::Surface_voronoi::internal;
@@ -307,3 +310,5 @@ TEST_CASE("det3 of differences: huge and tiny magnitudes", "[exact_predicates]")
       ep_check3(r);
     }
 }
+
+} // namespace svd_test_exact_predicates

@@ -9,6 +9,9 @@
 #include <sstream>
 #include <string>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_examples {
+
 namespace {
 
 std::string read_text(const std::string& path)
@@ -57,3 +60,5 @@ TEST_CASE("examples: every built example is listed and shown in the manual", "[e
     CHECK(built.count(name) == 1);
   }
 }
+
+} // namespace svd_test_examples

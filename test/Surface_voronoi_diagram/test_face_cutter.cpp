@@ -17,6 +17,9 @@
 #include <utility>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_face_cutter {
+
 namespace {
 
 namespace SVI = CGAL::Surface_voronoi::internal;
@@ -417,3 +420,5 @@ TEST_CASE("face cuts: the flat store gives back every face's cut, also after fac
   CHECK(all_same(in_order) == 0);
   CHECK(all_same(in_chunks) == 0);
 }
+
+} // namespace svd_test_face_cutter

@@ -21,6 +21,9 @@
 #include <utility>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_fast_marching_update {
+
 namespace {
 
 namespace SVI = CGAL::Surface_voronoi::internal;
@@ -303,3 +306,5 @@ TEST_CASE("Local_fast_marching: a second component is unreachable", "[fast_march
   CHECK(lfm.distance(0, first_count) == fm_inf);
   CHECK(lfm.distance(0, 0) == Approx(fm_length(m.points[0], m.seed_point(seeds[0]))).epsilon(0.03));
 }
+
+} // namespace svd_test_fast_marching_update

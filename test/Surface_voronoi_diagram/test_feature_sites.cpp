@@ -12,6 +12,9 @@
 #include <map>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_feature_sites {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -507,3 +510,5 @@ TEST_CASE("feature sites: along a varying density, the sites equidistribute sqrt
       CHECK(integral(xs[j]) / total == Approx(double(j + 1) / double(k + 1)).margin(1e-7));
   }
 }
+
+} // namespace svd_test_feature_sites

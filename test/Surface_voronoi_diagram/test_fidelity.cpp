@@ -6,6 +6,9 @@
 #include <test_meshes.h>
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_fidelity {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -67,3 +70,5 @@ TEST_CASE("fidelity: RVD on a U-fold reaches through the gap, biharmonic does no
   CHECK(fr.broken_cells > 0);     // RVD is never repaired
   CHECK(fb.broken_cells == 0);
 }
+
+} // namespace svd_test_fidelity

@@ -9,6 +9,9 @@
 #include <test_meshes.h>
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_geodesic_metric {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -194,3 +197,5 @@ TEST_CASE("geodesic metric: clear errors", "[geodesic][errors]")
   CHECK_NOTHROW(g.squared_distance(2, *vertices(m).begin()));
   CHECK_THROWS_AS(g.squared_distance(3, *vertices(m).begin()), SV::Input_error);   // not a site index
 }
+
+} // namespace svd_test_geodesic_metric

@@ -12,6 +12,9 @@
 
 #include <type_traits>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_geom_traits {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -97,3 +100,5 @@ TEST_CASE("geometric traits: site points and centroids are of the traits' point 
   // two cells on a sphere are about hemispheres: the centroid of each is nearer its own site
   CHECK(CGAL::squared_distance(c, em.point(Exact_mesh::Vertex_index(40))) < CGAL::squared_distance(c, em.point(Exact_mesh::Vertex_index(0))));
 }
+
+} // namespace svd_test_geom_traits

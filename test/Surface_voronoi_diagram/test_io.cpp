@@ -32,6 +32,9 @@
 #include <string>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_io {
+
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -757,3 +760,5 @@ TEST_CASE("IO check_triangle_mesh: works on Polyhedron_3", "[io][mesh]")
   poly.vertices_begin()->point() = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   REQUIRE_THROWS_WITH(SVIO::check_triangle_mesh(poly), "vertex 0 has a non-finite coordinate (nan)");
 }
+
+} // namespace svd_test_io

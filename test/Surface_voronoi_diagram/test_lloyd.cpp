@@ -7,6 +7,9 @@
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <test_meshes.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_lloyd {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -201,3 +204,5 @@ TEST_CASE("lloyd: the sites before first_moving_site stay where they are, the ot
   CHECK(moved == start.size() - fixed);
   CHECK(r.energies.back() < r.energies.front());
 }
+
+} // namespace svd_test_lloyd

@@ -28,6 +28,9 @@
 #include <string>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_mesh_generators {
+
 namespace {
 
 namespace SVG = svd_test::meshes;
@@ -520,3 +523,5 @@ TEST_CASE("data/lampshade_thin.off: a valid thin lampshade", "[generators][data]
   }
 }
 #endif
+
+} // namespace svd_test_mesh_generators

@@ -10,6 +10,9 @@
 #include <limits>
 #include <map>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_power_diagram {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -178,3 +181,5 @@ TEST_CASE("power: bad weights are named by validate_input", "[power]")
   require_same_partition(a, b);
   CHECK(b.site_weight(1) == 0.5);
 }
+
+} // namespace svd_test_power_diagram

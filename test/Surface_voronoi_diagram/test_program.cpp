@@ -42,6 +42,9 @@
 #include <utility>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_program {
+
 namespace svd_program_test {
 namespace {
 
@@ -2471,3 +2474,5 @@ TEST_CASE("program: the default biharmonic dimension is lowered on small meshes,
 
 } // namespace
 } // namespace svd_program_test
+
+} // namespace svd_test_program

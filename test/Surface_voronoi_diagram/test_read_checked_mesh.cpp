@@ -33,6 +33,9 @@
 
 #include <unistd.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_read_checked_mesh {
+
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -731,3 +734,5 @@ TEST_CASE("read: record files hold one bounded line at a time and escape what th
   std::istringstream last("1 2 3\n4 5 6");
   CHECK(SVIO::read_sites_file(last).size() == 2);
 }
+
+} // namespace svd_test_read_checked_mesh

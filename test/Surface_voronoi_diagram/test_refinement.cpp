@@ -13,6 +13,9 @@
 #include <map>
 #include <random>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_refinement {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -208,3 +211,5 @@ TEST_CASE("refinement: the local spacing refines where the sites crowd, and only
   INFO("outside the corner: mean rule " << vertices_outside(mean_mesh) << ", local rule " << vertices_outside(local_mesh));
   CHECK(std::abs(double(vertices_outside(local_mesh)) - double(vertices_outside(mean_mesh))) <= 0.2 * double(vertices_outside(mean_mesh)));
 }
+
+} // namespace svd_test_refinement

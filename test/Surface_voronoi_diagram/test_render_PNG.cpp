@@ -11,6 +11,9 @@
 
 #include <render_PNG.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_render_PNG {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace SVF = svd_figures;
@@ -224,3 +227,5 @@ TEST_CASE("PNG: signature, header, chunk CRCs and zlib checksum", "[render][io]"
   CHECK((SVF::internal::crc32_update(0xFFFFFFFFu, reinterpret_cast<const unsigned char*>(check.data()), 9) ^ 0xFFFFFFFFu)
         == 0xCBF43926u);
 }
+
+} // namespace svd_test_render_PNG

@@ -4,6 +4,9 @@
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_sampling {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -208,3 +211,5 @@ TEST_CASE("sampling: a density map that is negative, not a number or zero everyw
     m.remove_property_map(density);
   }
 }
+
+} // namespace svd_test_sampling

@@ -10,6 +10,9 @@
 #include <cstdlib>
 #include <set>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_site_colors {
+
 namespace {
 
 std::array<int, 4> rgba(const CGAL::IO::Color& c) { return {{c.red(), c.green(), c.blue(), c.alpha()}}; }
@@ -45,3 +48,5 @@ TEST_CASE("site_color: consecutive sites differ, and colours spread over many si
   }
   CHECK(distinct.size() > 900);
 }
+
+} // namespace svd_test_site_colors

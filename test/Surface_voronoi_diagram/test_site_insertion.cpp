@@ -5,6 +5,9 @@
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_site_insertion {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -88,3 +91,5 @@ TEST_CASE("insertion: the diagram on the augmented mesh satisfies the invariants
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(vd.site_of(r.site_vertices[i]) == i);
 }
+
+} // namespace svd_test_site_insertion

@@ -14,6 +14,9 @@
 #include <map>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_site_maps {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -154,3 +157,5 @@ TEST_CASE("site maps: a Polyhedron_3 with associative maps, and area no site rea
   CHECK(vertices_right == num_vertices(p));
   CHECK(faces_right == num_faces(p));
 }
+
+} // namespace svd_test_site_maps

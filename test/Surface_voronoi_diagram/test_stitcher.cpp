@@ -26,6 +26,9 @@
 #include <set>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_stitcher {
+
 namespace {
 
 namespace SVI = CGAL::Surface_voronoi::internal;
@@ -738,3 +741,5 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
   CHECK(rounds_compared >= 40);
   CHECK(rounds_admitting >= 20);
 }
+
+} // namespace svd_test_stitcher

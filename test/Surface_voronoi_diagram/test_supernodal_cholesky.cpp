@@ -12,6 +12,9 @@
 
 #include <random>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_supernodal_cholesky {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -190,3 +193,5 @@ TEST_CASE("supernodal Cholesky: a postorder keeps every subtree's columns consec
       CHECK((renumbered[j] < 0 || renumbered[j] > static_cast<int>(j)));
   }
 }
+
+} // namespace svd_test_supernodal_cholesky

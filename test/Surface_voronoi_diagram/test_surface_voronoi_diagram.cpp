@@ -13,6 +13,9 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_surface_voronoi_diagram {
 #endif
 
 using namespace svd_test;
@@ -490,3 +493,5 @@ TEST_CASE("diagram: validate_input names degenerate needles and coordinates out 
   CHECK(SV::validate_input(two_faces(0.5, 0x1p199), site).empty());
   CHECK(SV::validate_input(two_faces(0.5, 0x1p-199), site).empty());
 }
+
+} // namespace svd_test_surface_voronoi_diagram

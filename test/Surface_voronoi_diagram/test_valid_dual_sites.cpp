@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cmath>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_valid_dual_sites {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -232,3 +235,5 @@ TEST_CASE("valid dual: on a fine mesh stop_on_coarse_mesh changes nothing", "[du
   CHECK(checked.validity.is_valid());
   CHECK(checked.sites == plain.sites);
 }
+
+} // namespace svd_test_valid_dual_sites

@@ -11,6 +11,9 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/generators.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_valid_geodesic_dual_sites {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 
@@ -50,3 +53,5 @@ TEST_CASE("valid geodesic dual: a bar meshed with needles gets a valid dual on r
   CHECK(again.is_valid());
   CHECK(again.genus == 0);
 }
+
+} // namespace svd_test_valid_geodesic_dual_sites

@@ -7,6 +7,9 @@
 #include <CGAL/Surface_voronoi_diagram/Vertex_embedding.h>
 #include <test_meshes.h>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_vertex_embedding {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -75,3 +78,5 @@ TEST_CASE("lazy metric: computed only where sites propagate, same diagram as the
   // far fewer queries than sites x vertices
   CHECK(lazy.queries < num_vertices(m) * sites.size() / 10);
 }
+
+} // namespace svd_test_vertex_embedding

@@ -15,6 +15,9 @@
 #include <set>
 #include <vector>
 
+// this file's own names: the suite compiles its files together (see CMakeLists.txt)
+namespace svd_test_voronoi_polygon_mesh {
+
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
 namespace GEN = svd_test::meshes;
@@ -307,3 +310,5 @@ TEST_CASE("voronoi polygon mesh: where two faces only touch at a point, each get
   CHECK(number_of_border_cycles(out) == 1);
   CHECK(euler_characteristic(out) == 1);
 }
+
+} // namespace svd_test_voronoi_polygon_mesh
