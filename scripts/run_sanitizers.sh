@@ -27,7 +27,7 @@ build=build/sanitize
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all"
 CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
   -DSVD_BUILD_TESTS=ON -DSVD_BUILD_FUZZERS=ON >/dev/null
-cmake --build $build -j2 --target surface_voronoi svd_precondition_tests fuzz_mesh_reader fuzz_sites_reader fuzz_pipeline
+cmake --build $build -j2 --target svd_sanitizer_binaries
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:allocator_may_return_null=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
