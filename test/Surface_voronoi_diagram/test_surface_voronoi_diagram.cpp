@@ -13,10 +13,10 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
+#endif
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
 namespace svd_test_surface_voronoi_diagram {
-#endif
 
 using namespace svd_test;
 namespace SV = CGAL::Surface_voronoi;
@@ -59,7 +59,30 @@ std::vector<double> fingerprint(const Diagram& vd)
   return f;
 }
 
+// The labels of `samples` area-uniform points of m against the brute-force nearest site
+// (points whose two nearest sites tie within rounding skipped): {points checked, wrong labels}.
+template <class Diagram, class Locations>
+std::pair<std::size_t, std::size_t> check_nearest_site_labels(const Diagram& vd, const Mesh& m, const Locations& sites,
+                                                              std::size_t samples, unsigned seed)
+{
+  std::vector<Point> sp;
+  for(const auto& s : sites) sp.push_back(point_of(s, m));
+  std::size_t wrong = 0, checked = 0;
+  for(const auto& l : area_uniform_locations(m, samples, seed))
+  {
+    const Point p = point_of(l, m);
+    std::vector<std::pair<double, std::size_t> > d;
+    for(std::size_t i = 0; i < sp.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, sp[i])), i);
+    std::partial_sort(d.begin(), d.begin() + 2, d.end());
+    if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;   // a tie within rounding
+    ++checked;
+    wrong += (vd.site_of(l) != d[0].second);
+  }
+  return { checked, wrong };
+}
+
 } // namespace
+
 
 TEST_CASE("diagram: invariants for the biharmonic metric on several meshes", "[diagram]")
 {
@@ -243,19 +266,7 @@ TEST_CASE("diagram: the propagation in blocks gives the brute-force nearest site
   CHECK(vd.statistics().propagation_blocks >= 4);
   CHECK(vd.statistics().propagation_rounds >= 2);
   CHECK(vd.statistics().broken_cells == 0);
-  std::vector<Point> sp;
-  for(const auto& s : sites) sp.push_back(point_of(s, m));
-  std::size_t wrong = 0, checked = 0;
-  for(const auto& l : area_uniform_locations(m, 6000, 77))
-  {
-    const Point p = point_of(l, m);
-    std::vector<std::pair<double, std::size_t> > d;
-    for(std::size_t i = 0; i < sp.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, sp[i])), i);
-    std::partial_sort(d.begin(), d.begin() + 2, d.end());
-    if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;   // a tie within rounding
-    ++checked;
-    wrong += (vd.site_of(l) != d[0].second);
-  }
+  const auto [checked, wrong] = check_nearest_site_labels(vd, m, sites, 6000, 77);
   CHECK(checked > 5900);
   CHECK(wrong == 0);
   double sum = vd.unreached_area();
@@ -277,19 +288,7 @@ TEST_CASE("diagram: RVD labels equal the brute-force nearest site", "[diagram][r
     const auto sites = area_uniform_locations(m, 120, 17);
     CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites,
                                                       SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
-    std::vector<Point> sp;
-    for(const auto& s : sites) sp.push_back(point_of(s, m));
-    std::size_t wrong = 0, checked = 0;
-    for(const auto& l : area_uniform_locations(m, 4000, 99))
-    {
-      const Point p = point_of(l, m);
-      std::vector<std::pair<double, std::size_t> > d;
-      for(std::size_t i = 0; i < sp.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, sp[i])), i);
-      std::partial_sort(d.begin(), d.begin() + 2, d.end());
-      if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;   // a tie within rounding
-      ++checked;
-      wrong += (vd.site_of(l) != d[0].second);
-    }
+    const auto [checked, wrong] = check_nearest_site_labels(vd, m, sites, 4000, 99);
     CHECK(checked > 3900);
     CHECK(wrong == 0);
     // the partition covers the surface, pieces may be disconnected (no repair)
