@@ -269,9 +269,11 @@ bool added_sites_crowd_the_mesh(const Diagram& diagram, std::size_t first_added)
 /// the vertex of an edge where the cell's faces turn from facing along the vertex's side to
 /// facing against it); with no such rim, the surface bends more than its sites resolve, and
 /// the new site is at the Voronoi vertex. No new site is placed closer than a tenth of the
-/// mean spacing of the sites to another (it would make a sliver cell); a round that can place
-/// none ends the loop (`no_room_for_sites`). The sites that cut cells are then relaxed by
-/// Lloyd steps in which the given sites, and those on rims and Voronoi vertices, stay in place.
+/// mean spacing of the sites to another (it would make a sliver cell); where neither the rim
+/// nor the vertex has room (a rim crowded with sites already), the widest cell of the
+/// triangle is cut instead. A round that can place none ends the loop
+/// (`no_room_for_sites`). The sites that cut cells are then relaxed by Lloyd steps in which
+/// the given sites, and those on rims and Voronoi vertices, stay in place.
 /// The given sites keep their positions and indices; the added ones follow them, those that
 /// stay in place first (their order may change from round to round).
 ///
@@ -396,8 +398,10 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     for(std::size_t s = 0; s < cut.size(); ++s)
       if(cut[s]) add(farthest[s], moving);
     // a flipped triangle gets a site on the rim its fold crosses, or else at its Voronoi
-    // vertex, where the surface bends more than its three sites resolve (or its widest cell
-    // is cut, if no vertex of three cells makes it)
+    // vertex, where the surface bends more than its three sites resolve; its widest cell is
+    // cut if no vertex of three cells makes it, or if the rim and the vertex are both crowded
+    // (the planter pot's rim, where the two sheets are 7e-5 spacings apart, had sites beside
+    // both, and the loop ended there with the fold left)
     if(!v.flipped_triangle_indices.empty())
     {
       const auto vertices = internal::voronoi_vertex_locations<TriangleMesh>(diagram);
@@ -407,13 +411,12 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
         std::sort(key.begin(), key.end());
         const auto at = vertices.find(key);
         Location rim;
-        if(at == vertices.end())
-        {
-          const std::size_t best = widest_of({ key[0], key[1], key[2] });
-          if(best != internal::no_site) add(farthest[best], moving);
-        }
-        else if(!internal::rim_site_of_flip<TriangleMesh>(diagram, key, at->second, rim) || !add(rim, staying))
-          add(at->second, staying);
+        if(at != vertices.end()
+           && ((internal::rim_site_of_flip<TriangleMesh>(diagram, key, at->second, rim) && add(rim, staying))
+               || add(at->second, staying)))
+          continue;
+        const std::size_t best = widest_of({ key[0], key[1], key[2] });
+        if(best != internal::no_site) add(farthest[best], moving);
       }
     }
     if(moving.empty() && staying.empty())
