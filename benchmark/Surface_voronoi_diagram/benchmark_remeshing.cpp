@@ -9,7 +9,7 @@
 //
 //   benchmark_remeshing [--data DIR] [--sites N] [--lloyd K] [--samples S] [--quick] [--valid-dual]
 //                       [--models NAME,...] [--methods RVD,EDBVD,biharmonic,geodesic]
-//                       [--dimension D|auto] [--sharp-edges ANGLE]
+//                       [--dimension D|auto|full] [--sharp-edges ANGLE]
 // --sharp-edges: the edges where the normals turn by more than ANGLE degrees are breaklines,
 // and the sites start on them and on the border (feature_line_sites(); blue noise around
 // them, Lloyd keeping them); not for the geodesic metric's opt-in, which has no breaklines.
@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Biharmonic_green_metric.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
@@ -287,7 +288,18 @@ int main(int argc, char** argv)
       // the RVD's cells are not repaired: sites are not added to them
       if(wanted("RVD")) rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false, features));
       if(wanted("EDBVD")) rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual, features));
-      if(wanted("biharmonic"))
+      const std::size_t most_sites = n + (valid_dual ? (std::max)(std::size_t(64), n / 4) : 0);
+      const bool full = dimension == "full" || (dimension == "auto" && SV::biharmonic_full_spectrum_for_sites(num_vertices(m), most_sites));
+      if(wanted("biharmonic") && full)
+      {
+        // the full spectrum, as the program's --dimension auto takes it when it fits
+        const auto t = std::chrono::steady_clock::now();
+        SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> green(m);
+        const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+        rows.push_back(remesh(entry.first, dimension == "auto" ? "biharmonic d=auto (full)" : "biharmonic d=full", m, green, defaults,
+                              n, lloyd, samples, setup, valid_dual, features));
+      }
+      else if(wanted("biharmonic"))
       {
         const std::size_t d = (std::min)(dimension == "auto" ? SV::biharmonic_dimension_for_sites(n) : std::stoul(dimension),
                                          CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m));

@@ -1184,10 +1184,11 @@ TEST_CASE("program: biharmonic is the default metric and --dimension is honoured
   CHECK(different_files(dir / "four.ply", dir / "default.ply"));
 }
 
-// --dimension auto is biharmonic_dimension_for_sites() of the sites given: 700 sites ask for
-// ceil(700 / 30) = 24, the same diagram as --dimension 24; 10 resolves 300 cells, and is
-// warned about, once, naming the dimension auto would take.
-TEST_CASE("program: --dimension auto takes one dimension per 30 sites, and a dimension too small for the sites is warned about", "[program]")
+// --dimension auto is the full spectrum (Biharmonic_green_metric) whenever its columns fit in
+// 2 GiB, as here: the same diagram as --dimension full, another than --dimension 24
+// (biharmonic_dimension_for_sites(700), auto's choice when they do not fit). 10 resolves 300
+// cells, and is warned about, once, naming what auto would take.
+TEST_CASE("program: --dimension auto takes the full spectrum when it fits, and a dimension too small for the sites is warned about", "[program]")
 {
   Temp_dir dir;
   const Soup sphere = octahedral_sphere(4);
@@ -1195,23 +1196,30 @@ TEST_CASE("program: --dimension auto takes one dimension per 30 sites, and a dim
   const std::string mesh = (dir / "sphere.off").string();
 
   const Run automatic = run_program(dir, { mesh, "--random", "700", "--dimension", "auto", "--output", (dir / "auto.ply").string() });
+  const Run full = run_program(dir, { mesh, "--random", "700", "--dimension", "full", "--output", (dir / "full.ply").string() });
   const Run by_hand = run_program(dir, { mesh, "--random", "700", "--dimension", "24", "--output", (dir / "24.ply").string() });
   const Run too_small = run_program(dir, { mesh, "--random", "700", "--output", (dir / "10.ply").string() });
   const Run few_sites = run_program(dir, { mesh, "--random", "300", "--output", (dir / "300.ply").string() });
   check_success(automatic);
+  check_success(full);
   check_success(by_hand);
   check_success(too_small);
   check_success(few_sites);
-  CHECK(same_files(dir / "auto.ply", dir / "24.ply"));
+  check_output(dir / "full.ply", sphere, 700);
+  CHECK(same_files(dir / "auto.ply", dir / "full.ply"));
+  CHECK(different_files(dir / "auto.ply", dir / "24.ply"));
   CHECK(different_files(dir / "auto.ply", dir / "10.ply"));
   CHECK(automatic.err.find("warning") == std::string::npos);
+  CHECK(full.err.find("warning") == std::string::npos);
   CHECK(by_hand.err.find("warning") == std::string::npos);
   CHECK(few_sites.err.find("warning") == std::string::npos);
   CHECK(too_small.err == "surface_voronoi: warning: an embedding of dimension 10 resolves about 300 cells, fewer than the 700 sites: "
-                         "cells may come out in pieces (--dimension auto takes 24)\n");
+                         "cells may come out in pieces (--dimension auto takes the full spectrum)\n");
 
   const Run other_metric = run_program(dir, { mesh, "--random", "9", "--metric", "euclidean", "--dimension", "auto" });
   CHECK(other_metric.code == 2);
+  const Run other_metric_full = run_program(dir, { mesh, "--random", "9", "--metric", "geodesic", "--dimension", "full" });
+  CHECK(other_metric_full.code == 2);
   const Run bad_word = run_program(dir, { mesh, "--random", "9", "--dimension", "automatic" });
   CHECK(bad_word.code == 2);
 }

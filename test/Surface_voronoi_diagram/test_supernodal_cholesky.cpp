@@ -194,4 +194,39 @@ TEST_CASE("supernodal Cholesky: a postorder keeps every subtree's columns consec
   }
 }
 
+TEST_CASE("supernodal Cholesky: several right-hand sides at once, each as if alone", "[embedding][numerics]")
+{
+  // a postordered matrix with a block wider than the loops' limit, and one the factorization
+  // permutes inside
+  for(const Sparse& A : { postordered(random_spd(700, 2, 60, 11)), random_spd(500, 2, 40, 12) })
+  {
+    Cholesky cholesky;
+    REQUIRE(cholesky.factor(A));
+    const std::size_t n = std::size_t(A.rows());
+    auto rhs = [&](std::size_t i, std::size_t j) { return std::cos(0.37 * double(i) + 1.9 * double(j)) + 0.1 * double(j); };
+    std::vector<double> workspace;
+    // column j solved alone, the reference for the same column among others
+    std::vector<std::vector<double> > alone(17, std::vector<double>(n));
+    for(std::size_t j = 0; j < alone.size(); ++j)
+    {
+      for(std::size_t i = 0; i < n; ++i) alone[j][i] = rhs(i, j);
+      cholesky.solve_many_in_place(alone[j].data(), 1, workspace);
+      Eigen::VectorXd b(A.rows()), x = Eigen::Map<Eigen::VectorXd>(alone[j].data(), A.rows());
+      for(std::size_t i = 0; i < n; ++i) b[Eigen::Index(i)] = rhs(i, j);
+      CHECK((A.selfadjointView<Eigen::Lower>() * x - b).norm() <= 1e-11 * b.norm());
+    }
+    for(std::size_t count : { std::size_t(3), std::size_t(16), std::size_t(17) })
+    {
+      std::vector<double> X(n * count);
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = 0; j < count; ++j) X[i * count + j] = rhs(i, j);
+      cholesky.solve_many_in_place(X.data(), count, workspace);
+      bool same = true;
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = 0; j < count; ++j) same = same && X[i * count + j] == alone[j][i];
+      CHECK(same);
+    }
+  }
+}
+
 } // namespace svd_test_supernodal_cholesky

@@ -19,8 +19,11 @@ the mesh it is given, calls `set_sites()` once with all the sites, then calls
 `squared_distance()` as often as it needs, and never uses the metric after its constructor
 returns: the metric may then be queried, destroyed, or given to another diagram, whose
 `set_sites()` starts it afresh. `set_sites()` must therefore drop whatever an earlier set of
-sites left. The value for a site and a vertex must depend on them only, not on the order of
-the calls, so that diagrams are deterministic.
+sites left. The value for a site and a vertex must depend on them and on the set of sites
+only, not on the order of the calls, so that diagrams are deterministic. The diagram only
+compares the values of sites at one vertex (and their linear interpolations inside a face):
+a model may add to all of them a term of the vertex alone, as
+`CGAL::Surface_voronoi::Biharmonic_green_metric` does.
 
 <b>Copies.</b> Copies must share no state: a copy is an independent metric that can serve
 another diagram while the original serves one (read-only data such as the mesh may be
@@ -32,6 +35,7 @@ are in the units of the squared distances the model returns.
 for `CGAL::Surface_voronoi::Geodesic_metric`, and returns the squared length unchanged.
 
 \cgalHasModel `CGAL::Surface_voronoi::Geodesic_metric`
+\cgalHasModel `CGAL::Surface_voronoi::Biharmonic_green_metric`
 
 \sa `SurfaceVoronoiEmbedding`
 */

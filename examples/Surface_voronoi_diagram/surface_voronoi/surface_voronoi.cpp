@@ -4,7 +4,7 @@
 // surface_voronoi: the command-line program. Its interface is a contract (see the manual):
 //
 //   surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric NAME]
-//                   [--dimension D|auto] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
+//                   [--dimension D|auto|full] [--insert-sites] [--output OUT.ply] [--sites-out FILE]
 //                   [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K]
 //                   [--threads N] [--stats]
 //
@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Biharmonic_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Biharmonic_green_metric.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
@@ -114,7 +115,8 @@ struct Arguments
   long long random = -1, blue_noise = -1;
   unsigned int seed = 0;
   bool seed_given = false, dimension_given = false, insert_sites = false, stats = false, no_refine = false;
-  bool dimension_auto = false;   // --dimension auto: biharmonic_dimension_for_sites()
+  bool dimension_auto = false;   // --dimension auto: the full spectrum if it fits, else biharmonic_dimension_for_sites()
+  bool dimension_full = false;   // --dimension full, or auto's choice: Biharmonic_green_metric
   bool valid_dual = false;   // sites added until the dual is a valid mesh
   std::size_t dimension = 10;
   std::size_t lloyd = 0;
@@ -129,7 +131,7 @@ struct Arguments
 
 const char* usage =
   "usage: surface_voronoi MESH (--sites FILE | --random N | --blue-noise N) [--seed S] [--metric biharmonic|euclidean|rvd|geodesic]\n"
-  "                       [--dimension D|auto] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
+  "                       [--dimension D|auto|full] [--insert-sites] [--no-refine] [--output OUT.ply] [--sites-out FILE]\n"
   "                       [--max-site-distance R] [--breaklines FILE] [--sharp-edges ANGLE] [--dual OUT.off] [--valid-dual] [--lloyd K]\n"
   "                       [--curvature-density R] [--threads N] [--stats]";
 
@@ -174,6 +176,7 @@ Arguments parse(int argc, char** argv)
       const std::string d = value();
       a.dimension_given = true;
       if(d == "auto") a.dimension_auto = true;
+      else if(d == "full") a.dimension_full = true;
       else a.dimension = static_cast<std::size_t>(parse_integer(arg, d, 1, 10000));
     }
     else if(arg == "--insert-sites") a.insert_sites = true;
@@ -249,6 +252,11 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 template <class Function>
 auto with_input_metric(const Arguments& args, const Mesh& mesh, std::size_t dimension, const Function& f)
 {
+  if(args.metric == "biharmonic" && args.dimension_full)
+  {
+    SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> metric(mesh);
+    return f(metric);
+  }
   if(args.metric == "biharmonic")
   {
     CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension));
@@ -689,19 +697,35 @@ int run_main(int argc, char** argv)
               + ": the two sites are at the same surface point");
     fail(1, args.mesh + ": " + p.message);
   }
-  // --dimension auto grows with the sites given; a dimension that resolves fewer cells than
-  // there are sites is warned about
+  // --dimension auto takes the full spectrum when its columns fit (biharmonic_full_spectrum_for_sites(),
+  // with the vertices --insert-sites adds and the sites --valid-dual may add), and otherwise a
+  // dimension growing with the sites given; a dimension that resolves fewer cells than there
+  // are sites is warned about
+  const std::size_t most_sites = locations.size() + (args.valid_dual ? (std::max)(std::size_t(64), locations.size() / 4) : 0);
+  const std::size_t most_vertices = num_vertices(mesh) + (args.insert_sites ? locations.size() : 0);
+  const bool full_fits = SV::biharmonic_full_spectrum_for_sites(most_vertices, most_sites);
+  if(args.metric == "biharmonic" && args.dimension_auto)
+  {
+    args.dimension_full = full_fits;
+    if(!full_fits)
+      std::cerr << "surface_voronoi: note: the full spectrum would take "
+                << std::ceil(SV::biharmonic_green_metric_bytes(most_vertices, most_sites) / 1048576.) << " MiB for "
+                << most_sites << " sites on " << most_vertices << " vertices (more than 2 GiB): using an embedding of dimension "
+                << SV::biharmonic_dimension_for_sites(locations.size()) << std::endl;
+  }
   const std::size_t asked_dimension = args.dimension_auto ? SV::biharmonic_dimension_for_sites(locations.size()) : args.dimension;
-  if(args.metric == "biharmonic" && !args.dimension_auto && locations.size() > SV::biharmonic_resolved_sites(asked_dimension))
+  if(args.metric == "biharmonic" && !args.dimension_auto && !args.dimension_full
+     && locations.size() > SV::biharmonic_resolved_sites(asked_dimension))
     std::cerr << "surface_voronoi: warning: an embedding of dimension " << asked_dimension << " resolves about "
               << SV::biharmonic_resolved_sites(asked_dimension) << " cells, fewer than the " << locations.size()
               << " sites: cells may come out in pieces (--dimension auto takes "
-              << SV::biharmonic_dimension_for_sites(locations.size()) << ")" << std::endl;
+              << (full_fits ? std::string("the full spectrum") : std::to_string(SV::biharmonic_dimension_for_sites(locations.size())))
+              << ")" << std::endl;
   // The biharmonic embedding needs more vertices than eigenpairs (on the mesh it is built
   // on): without a number for --dimension, the dimension is lowered to what the mesh allows,
   // with a note.
   auto dimension_for = [&](const Mesh& m) {
-    if(args.metric != "biharmonic") return asked_dimension;
+    if(args.metric != "biharmonic" || args.dimension_full) return asked_dimension;
     const std::size_t largest = CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
     if(asked_dimension <= largest) return asked_dimension;
     const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
@@ -890,7 +914,13 @@ int run_main(int argc, char** argv)
       }
       const std::size_t dimension = dimension_for(*work);
       const auto te = Clock::now();
-      if(args.metric == "biharmonic")
+      if(args.metric == "biharmonic" && args.dimension_full)
+      {
+        SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> metric(*work);
+        const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
+        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
+      }
+      else if(args.metric == "biharmonic")
       {
         CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(dimension));
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();

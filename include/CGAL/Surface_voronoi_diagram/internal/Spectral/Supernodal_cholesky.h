@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -148,7 +149,111 @@ public:
     for(std::size_t k = 0; k < n; ++k) x[m_permutation[k]] = m_permuted[static_cast<Eigen::Index>(k)];
   }
 
+  /// X := A^{-1} X for `count` right-hand sides stored row by row: `X[i * count + j]` is row
+  /// i of column j. Each pass over the factor serves all the columns, which a solve per
+  /// column would read again each time. Column j gets the same numbers whatever the other
+  /// columns and `count` (plain loops, without the blocked kernels of `solve_in_place()`,
+  /// whose order of summation depends on the sizes), so that a result can be cached and
+  /// computed again bit for bit. `workspace` is the caller's, so that threads
+  /// can solve at once with one factorization.
+  void solve_many_in_place(double* X, std::size_t count, std::vector<double>& workspace) const
+  {
+    CGAL_precondition(m_ok);
+    const std::size_t n = m_first.empty() ? 0 : static_cast<std::size_t>(m_first.back());
+    const std::size_t widest = static_cast<std::size_t>(m_scratch.size());
+    const std::size_t permuted = m_permutation.empty() ? 0 : n * count;
+    workspace.resize(permuted + (widest + 1) * count);
+    double* T = workspace.data() + permuted;
+    double* Y = X;
+    if(permuted > 0)
+    {
+      Y = workspace.data();
+      for(std::size_t k = 0; k < n; ++k)
+        std::copy(X + std::size_t(m_permutation[k]) * count, X + (std::size_t(m_permutation[k]) + 1) * count, Y + k * count);
+    }
+    // a count known at compile time lets the compiler unroll and vectorize the inner loops
+    if(count == 16)
+      solve_many_postordered(Y, std::integral_constant<std::size_t, 16>(), T);
+    else
+      solve_many_postordered(Y, count, T);
+    if(permuted > 0)
+      for(std::size_t k = 0; k < n; ++k)
+        std::copy(Y + k * count, Y + (k + 1) * count, X + std::size_t(m_permutation[k]) * count);
+  }
+
 private:
+  // the loops of solve_postordered() with an innermost loop over the `count` columns; `T`
+  // holds (widest + 1) * count numbers
+  template <class Count>
+  void solve_many_postordered(double* X, Count count_, double* T) const
+  {
+    const std::size_t count = count_;
+    const int ns = static_cast<int>(number_of_supernodes());
+    double* v = T + static_cast<std::size_t>(m_scratch.size()) * count;
+    for(int s = 0; s < ns; ++s)   // L Y = X
+    {
+      const int f = m_first[s], k = m_first[s + 1] - f;
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int m = k + r;
+      const double* B = m_values.data() + m_value_begin[s];
+      const int* rows = m_rows.data() + m_row_begin[s];
+      std::fill(T, T + std::size_t(r) * count, 0.0);
+      for(int c = 0; c < k; ++c)
+      {
+        const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+        double* xc = X + std::size_t(f + c) * count;
+        for(std::size_t j = 0; j < count; ++j) xc[j] /= column[c];
+        for(int a = c + 1; a < k; ++a)
+        {
+          double* xa = X + std::size_t(f + a) * count;
+          const double w = column[a];
+          for(std::size_t j = 0; j < count; ++j) xa[j] -= w * xc[j];
+        }
+        for(int q = 0; q < r; ++q)
+        {
+          double* tq = T + std::size_t(q) * count;
+          const double w = column[k + q];
+          for(std::size_t j = 0; j < count; ++j) tq[j] += w * xc[j];
+        }
+      }
+      for(int q = 0; q < r; ++q)
+      {
+        double* xq = X + std::size_t(rows[q]) * count;
+        const double* tq = T + std::size_t(q) * count;
+        for(std::size_t j = 0; j < count; ++j) xq[j] -= tq[j];
+      }
+    }
+    for(int s = ns - 1; s >= 0; --s)   // L^T X = Y
+    {
+      const int f = m_first[s], k = m_first[s + 1] - f;
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int m = k + r;
+      const double* B = m_values.data() + m_value_begin[s];
+      const int* rows = m_rows.data() + m_row_begin[s];
+      for(int q = 0; q < r; ++q)
+        std::copy(X + std::size_t(rows[q]) * count, X + std::size_t(rows[q] + 1) * count, T + std::size_t(q) * count);
+      for(int c = k - 1; c >= 0; --c)
+      {
+        const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+        double* xc = X + std::size_t(f + c) * count;
+        std::copy(xc, xc + count, v);
+        for(int q = 0; q < r; ++q)
+        {
+          const double* tq = T + std::size_t(q) * count;
+          const double w = column[k + q];
+          for(std::size_t j = 0; j < count; ++j) v[j] -= w * tq[j];
+        }
+        for(int a = c + 1; a < k; ++a)
+        {
+          const double* xa = X + std::size_t(f + a) * count;
+          const double w = column[a];
+          for(std::size_t j = 0; j < count; ++j) v[j] -= w * xa[j];
+        }
+        for(std::size_t j = 0; j < count; ++j) xc[j] = v[j] / column[c];
+      }
+    }
+  }
+
   void solve_postordered(double* x) const
   {
     const int ns = static_cast<int>(number_of_supernodes());
