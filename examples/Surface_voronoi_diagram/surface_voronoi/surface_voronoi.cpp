@@ -704,14 +704,28 @@ int run_main(int argc, char** argv)
   const std::size_t most_sites = locations.size() + (args.valid_dual ? (std::max)(std::size_t(64), locations.size() / 4) : 0);
   const std::size_t most_vertices = num_vertices(mesh) + (args.insert_sites ? locations.size() : 0);
   const bool full_fits = SV::biharmonic_full_spectrum_for_sites(most_vertices, most_sites);
+  const std::string full_size = std::to_string(static_cast<long long>(std::ceil(SV::biharmonic_green_metric_bytes(most_vertices, most_sites) / 1048576.)))
+                                + " MiB for " + std::to_string(most_sites) + " sites on " + std::to_string(most_vertices) + " vertices";
+  if(args.metric == "biharmonic" && args.dimension_full && !full_fits)
+    fail(1, "--dimension full: the full spectrum would take " + full_size + ", more than the 2 GiB the program allows; "
+            "give a dimension or --dimension auto");
   if(args.metric == "biharmonic" && args.dimension_auto)
   {
     args.dimension_full = full_fits;
     if(!full_fits)
-      std::cerr << "surface_voronoi: note: the full spectrum would take "
-                << std::ceil(SV::biharmonic_green_metric_bytes(most_vertices, most_sites) / 1048576.) << " MiB for "
-                << most_sites << " sites on " << most_vertices << " vertices (more than 2 GiB): using an embedding of dimension "
+      std::cerr << "surface_voronoi: note: the full spectrum would take " << full_size << " (more than 2 GiB): using an embedding of dimension "
                 << SV::biharmonic_dimension_for_sites(locations.size()) << std::endl;
+    // a mesh whose Laplacian is not definite in floating point once a vertex is held (caps of
+    // height 1e-9) keeps the eigen-solver, which shifts it instead
+    if(full_fits)
+      try { SV::Biharmonic_green_metric<Mesh> probe(mesh); }
+      catch(const SV::Numerical_error&)
+      {
+        args.dimension_full = false;
+        std::cerr << "surface_voronoi: note: the full spectrum cannot be computed on this mesh (its Laplacian is not positive "
+                     "definite in floating point): using an embedding of dimension " << SV::biharmonic_dimension_for_sites(locations.size())
+                  << std::endl;
+      }
   }
   const std::size_t asked_dimension = args.dimension_auto ? SV::biharmonic_dimension_for_sites(locations.size()) : args.dimension;
   if(args.metric == "biharmonic" && !args.dimension_auto && !args.dimension_full

@@ -59,8 +59,10 @@ namespace Surface_voronoi {
 /// smaller than its shortest wavelength (`biharmonic_resolved_sites()`): with thousands of
 /// sites, cells come out in pieces or wrapped around thin parts, and the dimension it would
 /// take costs more than this metric. The `surface_voronoi` program's `--dimension auto`
-/// picks this metric when the sites outnumber what dimension 100 resolves (3,000), as long
-/// as its columns fit in 2 GiB.
+/// picks this metric whenever its columns fit in 2 GiB
+/// (`biharmonic_full_spectrum_for_sites()`). It does not make the biharmonic distance a
+/// length metric: around a rod thinner than the cells, cells still come out as rings (see the
+/// manual's section on the full spectrum).
 ///
 /// <b>Values.</b> `squared_distance(i, v)` returns \f$ d^2(v, s_i) - \min_j d^2(v, s_j) \f$:
 /// the squared distance in excess of that of the nearest site. The diagram only compares
