@@ -288,7 +288,7 @@ int main(int argc, char** argv)
       // the RVD's cells are not repaired: sites are not added to them
       if(wanted("RVD")) rows.push_back(remesh(entry.first, "RVD", m, xyz, rvd, n, lloyd, samples, 0., false, features));
       if(wanted("EDBVD")) rows.push_back(remesh(entry.first, "EDBVD", m, xyz, defaults, n, lloyd, samples, 0., valid_dual, features));
-      const std::size_t most_sites = n + (valid_dual ? (std::max)(std::size_t(64), n / 4) : 0);
+      const std::size_t most_sites = n + (valid_dual ? SV::default_maximum_number_of_added_sites(n) : 0);
       const bool full = dimension == "full" || (dimension == "auto" && SV::biharmonic_full_spectrum_for_sites(num_vertices(m), most_sites));
       if(wanted("biharmonic") && full)
       {

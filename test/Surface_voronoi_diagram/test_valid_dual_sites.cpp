@@ -76,6 +76,7 @@ TEST_CASE("valid dual: three rings around a torus get sites until the dual is a 
   INFO(r.validity.reason());
   CHECK(r.validity.is_valid());
   CHECK(r.sites_added > 0);
+  CHECK(r.sites_added <= SV::default_maximum_number_of_added_sites(given.size()));
   CHECK(r.rounds > 0);
   REQUIRE(r.sites.size() == given.size() + r.sites_added);
   for(std::size_t i = 0; i < given.size(); ++i)
@@ -89,6 +90,14 @@ TEST_CASE("valid dual: three rings around a torus get sites until the dual is a 
   CHECK(again.is_valid());
   CHECK(genus == 1);
   CHECK(r.validity.genus == 1);
+}
+
+TEST_CASE("valid dual: the default budget is a quarter of the given sites, and at least 64", "[dual][validity]")
+{
+  CHECK(SV::default_maximum_number_of_added_sites(0) == 64);
+  CHECK(SV::default_maximum_number_of_added_sites(259) == 64);
+  CHECK(SV::default_maximum_number_of_added_sites(260) == 65);
+  CHECK(SV::default_maximum_number_of_added_sites(3000) == 750);
 }
 
 TEST_CASE("valid dual: sites whose dual is valid already are returned as they are", "[dual][validity]")

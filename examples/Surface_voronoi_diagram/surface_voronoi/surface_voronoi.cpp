@@ -247,6 +247,9 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
   return num_vertices(mesh) + (std::min)(refinement_max_vertices, refinement_vertices_per_element * (num_vertices(mesh) + sites));
 }
 
+// the metric of --dimension full, and of auto when its columns fit
+typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
+
 // Calls `f(metric)` with the metric --metric names, built on `mesh` (the biharmonic one of
 // dimension `dimension`): Lloyd's and --valid-dual's metric, on the input mesh.
 template <class Function>
@@ -254,7 +257,7 @@ auto with_input_metric(const Arguments& args, const Mesh& mesh, std::size_t dime
 {
   if(args.metric == "biharmonic" && args.dimension_full)
   {
-    SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> metric(mesh);
+    Full_spectrum_metric metric(mesh);
     return f(metric);
   }
   if(args.metric == "biharmonic")
@@ -701,7 +704,7 @@ int run_main(int argc, char** argv)
   // with the vertices --insert-sites adds and the sites --valid-dual may add), and otherwise a
   // dimension growing with the sites given; a dimension that resolves fewer cells than there
   // are sites is warned about
-  const std::size_t most_sites = locations.size() + (args.valid_dual ? (std::max)(std::size_t(64), locations.size() / 4) : 0);
+  const std::size_t most_sites = locations.size() + (args.valid_dual ? SV::default_maximum_number_of_added_sites(locations.size()) : 0);
   const std::size_t most_vertices = num_vertices(mesh) + (args.insert_sites ? locations.size() : 0);
   const bool full_fits = SV::biharmonic_full_spectrum_for_sites(most_vertices, most_sites);
   const std::string full_size = std::to_string(static_cast<long long>(std::ceil(SV::biharmonic_green_metric_bytes(most_vertices, most_sites) / 1048576.)))
@@ -718,7 +721,7 @@ int run_main(int argc, char** argv)
     // a mesh whose Laplacian is not definite in floating point once a vertex is held (caps of
     // height 1e-9) keeps the eigen-solver, which shifts it instead
     if(full_fits)
-      try { SV::Biharmonic_green_metric<Mesh> probe(mesh); }
+      try { Full_spectrum_metric probe(mesh); }
       catch(const SV::Numerical_error&)
       {
         args.dimension_full = false;
@@ -796,7 +799,7 @@ int run_main(int argc, char** argv)
   std::size_t sites_added = 0;
   if(args.valid_dual)
   {
-    const std::size_t given = locations.size(), max_added = (std::max)(std::size_t(64), given / 4);
+    const std::size_t given = locations.size(), max_added = SV::default_maximum_number_of_added_sites(given);
     // the added sites weigh nothing: the weight map covers every index they may take
     if(!choices.weights.empty()) choices.weights.resize(given + max_added, 0.);
     try
@@ -930,7 +933,7 @@ int run_main(int argc, char** argv)
       const auto te = Clock::now();
       if(args.metric == "biharmonic" && args.dimension_full)
       {
-        SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> metric(*work);
+        Full_spectrum_metric metric(*work);
         const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
         run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
       }

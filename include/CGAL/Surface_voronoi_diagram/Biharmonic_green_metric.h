@@ -136,7 +136,7 @@ public:
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     m_mesh = std::make_shared<const Indexed>(tm, vpm);
     auto green = std::make_shared<Green_function>();
-    if(!green->build(m_mesh->points, m_mesh->triangles))
+    if(!green->build(m_mesh->points, m_mesh->triangles, m_mesh->face_component, m_mesh->number_of_components))
       throw Numerical_error("Biharmonic_green_metric: the cotangent Laplacian is not positive definite once a vertex of "
                             "each component is fixed; is the mesh degenerate?");
     m_green = green;

@@ -43,6 +43,16 @@ namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
+/// The default of the named parameter `maximum_number_of_added_sites` of
+/// `add_sites_for_valid_dual()` and `add_sites_for_valid_geodesic_dual()` for `given` sites: a
+/// quarter of them, and at least 64. A caller that sizes something by the sites there may be
+/// (a weight map, a memory budget) asks it.
+inline std::size_t default_maximum_number_of_added_sites(std::size_t given)
+{
+  return (std::max)(std::size_t(64), given / 4);
+}
+
+/// \ingroup PkgSurfaceVoronoiDiagramSites
 /// What `add_sites_for_valid_dual()` did.
 /// \tparam TriangleMesh the mesh type of the sites
 template <class TriangleMesh>
@@ -328,7 +338,7 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
 
   const std::size_t given = sites.size();
   const std::size_t max_added = choose_parameter(get_parameter(np, internal_np::maximum_number_of_added_sites),
-                                                 (std::max)(std::size_t(64), given / 4));
+                                                 default_maximum_number_of_added_sites(given));
   const std::size_t relax = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(3));
   const bool stop_when_coarse = choose_parameter(get_parameter(np, internal_np::stop_on_coarse_mesh), false);
   // rounds beyond the budget's need: each adds at least one site

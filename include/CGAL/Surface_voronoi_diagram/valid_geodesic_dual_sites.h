@@ -153,7 +153,7 @@ add_sites_for_valid_geodesic_dual(const TriangleMesh& tm,
 
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   const std::size_t max_added = choose_parameter(get_parameter(np, internal_np::maximum_number_of_added_sites),
-                                                 (std::max)(std::size_t(64), sites.size() / 4));
+                                                 default_maximum_number_of_added_sites(sites.size()));
   const std::size_t max_vertices = choose_parameter(get_parameter(np, internal_np::refinement_max_vertices), std::size_t(20000000));
   // a pass adds at least one site, or ends the loop; those ended by crowding are few
   const int max_passes = 24;

@@ -58,49 +58,33 @@ public:
 
   Biharmonic_green_function() {}
 
-  // false if the pinned Laplacian is not numerically positive definite
+  // false if the pinned Laplacian is not numerically positive definite; `face_component`
+  // and `components` are the mesh's connected components (those of Indexed_mesh)
   template <class Index>
-  bool build(const std::vector<Point_d>& points, const std::vector<std::array<Index, 3> >& triangles)
+  bool build(const std::vector<Point_d>& points, const std::vector<std::array<Index, 3> >& triangles,
+             const std::vector<Index>& face_component, std::size_t components)
   {
     const std::size_t n = points.size();
     Eigen::SparseMatrix<double> L, M;
     assemble_cotangent_laplacian(points, triangles, L, M);
     m_mass.assign(M.diagonal().data(), M.diagonal().data() + n);
 
-    // the components of the vertices (by their triangles); a vertex in no triangle is one alone
-    std::vector<std::size_t> parent(n);
-    for(std::size_t v = 0; v < n; ++v) parent[v] = v;
-    auto find = [&](std::size_t v) {
-      while(parent[v] != v) v = parent[v] = parent[parent[v]];
-      return v;
-    };
-    for(const auto& t : triangles)
-      for(int k = 1; k < 3; ++k)
-      {
-        const std::size_t a = find(std::size_t(t[0])), b = find(std::size_t(t[k]));
-        if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-      }
-    m_component.assign(n, 0);
-    m_pinned.clear();
-    std::vector<std::size_t> number(n, none);
+    // the components of the vertices, those of their faces; a vertex in no face is one alone
+    m_component.assign(n, none);
+    for(std::size_t f = 0; f < triangles.size(); ++f)
+      for(int k = 0; k < 3; ++k) m_component[std::size_t(triangles[f][k])] = std::size_t(face_component[f]);
     for(std::size_t v = 0; v < n; ++v)
-    {
-      const std::size_t root = find(v);
-      if(number[root] == none)
-      {
-        number[root] = m_pinned.size();
-        m_pinned.push_back(v);   // the lowest index of the component
-      }
-      m_component[v] = number[root];
-    }
-    m_area.assign(m_pinned.size(), 0.);
+      if(m_component[v] == none) m_component[v] = components++;
+    m_area.assign(components, 0.);
     for(std::size_t v = 0; v < n; ++v) m_area[m_component[v]] += m_mass[v];
-    m_first.assign(m_pinned.size() + 1, 0);
+    m_first.assign(components + 1, 0);
     for(std::size_t v = 0; v < n; ++v) ++m_first[m_component[v] + 1];
-    for(std::size_t c = 0; c < m_pinned.size(); ++c) m_first[c + 1] += m_first[c];
+    for(std::size_t c = 0; c < components; ++c) m_first[c + 1] += m_first[c];
     m_members.assign(n, 0);
     std::vector<std::size_t> at(m_first.begin(), m_first.end() - 1);
     for(std::size_t v = 0; v < n; ++v) m_members[at[m_component[v]]++] = v;
+    m_pinned.resize(components);
+    for(std::size_t c = 0; c < components; ++c) m_pinned[c] = *members_begin(c);   // its lowest index
 
     std::vector<char> pinned(n, 0);
     for(std::size_t v : m_pinned) pinned[v] = 1;
