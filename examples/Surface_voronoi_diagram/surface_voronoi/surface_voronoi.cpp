@@ -250,29 +250,58 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 // the metric of --dimension full, and of auto when its columns fit
 typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
 
-// Calls `f(metric)` with the metric --metric names, built on `mesh` (the biharmonic one of
-// dimension `dimension`): Lloyd's and --valid-dual's metric, on the input mesh.
-template <class Function>
-auto with_input_metric(const Arguments& args, const Mesh& mesh, std::size_t dimension, const Function& f)
+// The metric --metric names on the input mesh (the biharmonic one of the dimension given to
+// build()), built once and shared by the stages that work on that mesh: Lloyd, --valid-dual
+// and the final diagram. They thus share one eigen-solve or factorization, and the full
+// spectrum's columns of the sites that do not move (each stage built its own before: the
+// final diagram of 3000 sites on the 22k-vertex sword computed its 3000 columns again, 7 s).
+// A metric is the same object whichever stage builds it, so sharing it changes no result.
+class Input_metric
 {
-  if(args.metric == "biharmonic" && args.dimension_full)
+public:
+  Input_metric(const Arguments& args, const Mesh& mesh) : m_args(args), m_mesh(mesh) {}
+
+  // builds the metric unless it is built; its seconds are those of the first build
+  void build(std::size_t dimension)
   {
-    Full_spectrum_metric metric(mesh);
-    return f(metric);
+    if(built()) return;
+    const auto start = std::chrono::steady_clock::now();
+    if(m_args.metric == "biharmonic" && m_args.dimension_full)
+      m_full.reset(new Full_spectrum_metric(m_mesh));
+    else if(m_args.metric == "biharmonic")
+      m_biharmonic.reset(new CGAL::Biharmonic_embedding<Mesh>(m_mesh, SV::parameters::embedding_dimension(dimension)));
+    else if(m_args.metric == "geodesic")
+      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh));
+    else
+      m_euclidean.reset(new SV::Euclidean_embedding<Mesh>(m_mesh));
+    m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  if(args.metric == "biharmonic")
+
+  // `f(metric)`, the metric built first if it is not
+  template <class Function>
+  auto apply(std::size_t dimension, const Function& f)
   {
-    CGAL::Biharmonic_embedding<Mesh> metric(mesh, SV::parameters::embedding_dimension(dimension));
-    return f(metric);
+    build(dimension);
+    if(m_full) return f(*m_full);
+    if(m_biharmonic) return f(*m_biharmonic);
+    if(m_geodesic) return f(*m_geodesic);
+    return f(*m_euclidean);
   }
-  if(args.metric == "geodesic")
-  {
-    SV::Geodesic_metric<Mesh> metric(mesh);
-    return f(metric);
-  }
-  SV::Euclidean_embedding<Mesh> metric(mesh);
-  return f(metric);
-}
+
+  bool built() const { return m_full || m_biharmonic || m_geodesic || m_euclidean; }
+  double build_seconds() const { return m_seconds; }
+  // frees it, for a stage that works on another mesh
+  void release() { m_full.reset(); m_biharmonic.reset(); m_geodesic.reset(); m_euclidean.reset(); }
+
+private:
+  const Arguments& m_args;
+  const Mesh& m_mesh;
+  std::unique_ptr<Full_spectrum_metric> m_full;
+  std::unique_ptr<CGAL::Biharmonic_embedding<Mesh> > m_biharmonic;
+  std::unique_ptr<SV::Geodesic_metric<Mesh> > m_geodesic;
+  std::unique_ptr<SV::Euclidean_embedding<Mesh> > m_euclidean;
+  double m_seconds = 0;
+};
 
 // Sites that --sites-out must give back bit for bit: read back, the point written for a
 // site must be located at that very site. Two kinds of sites have that property:
@@ -712,6 +741,7 @@ int run_main(int argc, char** argv)
   if(args.metric == "biharmonic" && args.dimension_full && !full_fits)
     fail(1, "--dimension full: the full spectrum would take " + full_size + ", more than the 2 GiB the program allows; "
             "give a dimension or --dimension auto");
+  Input_metric input_metric(args, mesh);
   if(args.metric == "biharmonic" && args.dimension_auto)
   {
     args.dimension_full = full_fits;
@@ -721,7 +751,7 @@ int run_main(int argc, char** argv)
     // a mesh whose Laplacian is not definite in floating point once a vertex is held (caps of
     // height 1e-9) keeps the eigen-solver, which shifts it instead
     if(full_fits)
-      try { Full_spectrum_metric probe(mesh); }
+      try { input_metric.build(0); }
       catch(const SV::Numerical_error&)
       {
         args.dimension_full = false;
@@ -770,12 +800,13 @@ int run_main(int argc, char** argv)
   // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
   // with --insert-sites the relaxed sites are inserted afterwards
   std::vector<double> lloyd_energies;
-  double lloyd_seconds = 0;   // every iteration, with the metric they share
+  double lloyd_seconds = 0;   // every iteration (the metric they share built before)
   if(args.lloyd > 0)
   {
-    const auto lloyd_start = Clock::now();
     try
     {
+      input_metric.build(dimension_for(mesh));
+      const auto lloyd_start = Clock::now();
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
         const auto steps = SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd));
@@ -783,7 +814,7 @@ int run_main(int argc, char** argv)
           ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)
           : with_diagram_parameters(choices, steps, run);
       };
-      const SV::Lloyd_result<Mesh> r = with_input_metric(args, mesh, dimension_for(mesh), relax);
+      const SV::Lloyd_result<Mesh> r = input_metric.apply(dimension_for(mesh), relax);
       lloyd_energies = r.energies;
       for(std::size_t i = 0; i < r.sites.size(); ++i)
         locations[i] = canonical_location(r.sites[i], mesh, site_points[i]);
@@ -818,6 +849,7 @@ int run_main(int argc, char** argv)
         // this program's canonical locations (by up to 2^-25 of a face), which can tip a tie
         // of the dual: it is called again on them until it adds none, so that the validity it
         // reports is that of exactly the final diagram.
+        input_metric.release();   // Lloyd's, on the mesh not refined
         std::vector<Location> current = locations;
         std::size_t added = 0, rounds = 0;
         for(int attempt = 0; attempt < 4; ++attempt)
@@ -840,7 +872,7 @@ int run_main(int argc, char** argv)
         r.rounds = rounds;
       }
       else
-        r = with_input_metric(args, mesh, dimension_for(mesh), add);
+        r = input_metric.apply(dimension_for(mesh), add);
       if(!r.validity.is_valid())
         fail(1, args.mesh + ": no valid dual reached (" + std::to_string(r.sites_added) + " sites added, at most "
                 + std::to_string(max_added) + "): " + r.validity.reason()
@@ -863,6 +895,9 @@ int run_main(int argc, char** argv)
   {
     {
       const Mesh* work = &mesh;
+      // the final diagram on a copy of the mesh (sites inserted, or refined for the geodesic
+      // metric) has a metric of its own: the input mesh's is freed first
+      if(args.insert_sites || (args.metric == "geodesic" && !args.no_refine)) input_metric.release();
       std::vector<Location> work_sites = locations;
       SV::Site_insertion_result<Mesh, Point> inserted;
       Mesh refined;   // the refined copy, each face knowing the input face it lies in
@@ -930,28 +965,18 @@ int run_main(int argc, char** argv)
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
       const std::size_t dimension = dimension_for(*work);
-      const auto te = Clock::now();
-      if(args.metric == "biharmonic" && args.dimension_full)
-      {
-        Full_spectrum_metric metric(*work);
-        const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
-        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
-      }
-      else if(args.metric == "biharmonic")
-      {
-        CGAL::Biharmonic_embedding<Mesh> metric(*work, SV::parameters::embedding_dimension(dimension));
-        const double embedding = std::chrono::duration<double>(Clock::now() - te).count();
-        run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
-      }
-      else if(args.metric == "geodesic")
-      {
-        SV::Geodesic_metric<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points, sites_added);
-      }
+      if(work == &mesh)
+        input_metric.apply(dimension, [&](auto& metric) {
+          const double embedding = args.metric == "biharmonic" ? input_metric.build_seconds() : 0.;
+          run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
+        });
       else
       {
-        SV::Euclidean_embedding<Mesh> metric(*work);
-        run(args, *work, metric, work_sites, choices, load, 0., insertion, site_points, sites_added);
+        Input_metric metric(args, *work);
+        metric.apply(dimension, [&](auto& m) {
+          const double embedding = args.metric == "biharmonic" ? metric.build_seconds() : 0.;
+          run(args, *work, m, work_sites, choices, load, embedding, insertion, site_points, sites_added);
+        });
       }
     }
   }
