@@ -210,4 +210,34 @@ TEST_CASE("biharmonic Green metric: columns kept for the sites that stay, the sa
   CHECK_THROWS_AS(fresh.squared_distance(second.size(), *vertices(m).begin()), SV::Input_error);
 }
 
+TEST_CASE("biharmonic Green metric: more columns than maximum_column_memory allows are an input error", "[biharmonic][green]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 30, 12);
+  const std::size_t n = num_vertices(m);
+  const std::vector<Location<Mesh> > sites = area_uniform_locations(m, 12, 3);
+  // room for exactly 10 columns
+  Green bounded(m, SV::parameters::maximum_column_memory(SV::biharmonic_green_metric_bytes(n, 10)));
+  const std::vector<Location<Mesh> > ten(sites.begin(), sites.begin() + 10);
+  bounded.set_sites(ten);
+  CHECK(bounded.number_of_computed_columns() == 10);
+  std::vector<double> before;
+  for(auto v : vertices(m))
+    for(std::size_t i = 0; i < ten.size(); ++i) before.push_back(bounded.squared_distance(i, v));
+
+  CHECK_THROWS_AS(bounded.set_sites(sites), SV::Input_error);
+  // nothing computed, and the ten sites are still the metric's
+  CHECK(bounded.number_of_computed_columns() == 10);
+  std::vector<double> after;
+  for(auto v : vertices(m))
+    for(std::size_t i = 0; i < ten.size(); ++i) after.push_back(bounded.squared_distance(i, v));
+  CHECK(after == before);
+  CHECK_THROWS_AS(bounded.squared_distance(10, *vertices(m).begin()), SV::Input_error);
+
+  // the default (4 GiB) takes them
+  Green unbounded(m);
+  unbounded.set_sites(sites);
+  CHECK(unbounded.number_of_computed_columns() == sites.size());
+}
+
 } // namespace svd_test_biharmonic_green_metric

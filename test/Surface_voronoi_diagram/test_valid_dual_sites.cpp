@@ -11,6 +11,7 @@
 #include <CGAL/Surface_voronoi_diagram/valid_dual_sites.h>
 #include <test_meshes.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -125,6 +126,31 @@ TEST_CASE("valid dual: a budget too small stops with the dual's reason, within t
   CHECK(r.sites_added <= 1);
   CHECK(r.sites.size() == given.size() + r.sites_added);
   CHECK_FALSE(r.validity.reason().empty());
+}
+
+// A component without sites has no cell to cut: the loop stops at once and says so
+// (nothing_to_cut), adds nothing, and the validity names the missing component.
+TEST_CASE("valid dual: a component without sites stops the loop with nothing to cut", "[dual][validity]")
+{
+  Mesh m, other;
+  GEN::make_icosphere(m, 3, 1.0);
+  const auto given = area_uniform_locations(m, 40, 7);   // before the second sphere is added
+  GEN::make_icosphere(other, 3, 1.0);
+  for(auto v : vertices(other)) other.point(v) = other.point(v) + K::Vector_3(5, 0, 0);
+  CGAL::copy_face_graph(other, m);
+  Euclidean e(m);
+  const SV::Valid_dual_result<Mesh> r = SV::add_sites_for_valid_dual(m, e, given);
+  CHECK_FALSE(r.validity.is_valid());
+  CHECK(r.nothing_to_cut);
+  CHECK_FALSE(r.no_room_for_sites);
+  CHECK(r.sites_added == 0);
+  CHECK(r.sites == given);
+  // the sphere with the sites alone is valid: the missing component is the only defect
+  Mesh alone;
+  GEN::make_icosphere(alone, 3, 1.0);
+  Euclidean e_alone(alone);
+  long genus = 0;
+  CHECK(check_afresh(alone, e_alone, area_uniform_locations(alone, 40, 7), genus).is_valid());
 }
 
 // Where a flipped triangle gets its site: the Voronoi vertex of its three cells. The oracle:

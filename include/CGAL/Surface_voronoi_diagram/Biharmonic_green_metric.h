@@ -17,7 +17,9 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/biharmonic_dimension.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
@@ -34,6 +36,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -71,7 +74,9 @@ namespace Surface_voronoi {
 /// per vertex. Power weights are in these squared units, those of \f$ g \f$ (area squared).
 ///
 /// <b>Cost.</b> Memory: one column of `num_vertices(tm)` doubles per site (3,000 sites on a
-/// mesh of 20,000 vertices: 480 MB). Time: two solves per new site, in blocks of 16 sites
+/// mesh of 20,000 vertices: 480 MB), bounded by the named parameter `maximum_column_memory`
+/// (4 GiB by default: more sites are an `Input_error`). A new set of sites frees the columns
+/// it does not reuse before computing its own, so Lloyd relaxation holds one set at a time. Time: two solves per new site, in blocks of 16 sites
 /// that share each pass over the factor, on every core with `CGAL::Parallel_tag`. Columns
 /// are kept from one `set_sites()` to the next for the sites that did not move (Lloyd
 /// relaxation moves them all; adding sites until the dual is valid moves a few).
@@ -123,6 +128,14 @@ public:
   ///     \cgalParamType{`Vertex_point_map`}
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{maximum_column_memory}
+  ///     \cgalParamDescription{the most memory, in bytes, that the columns of the sites of one
+  ///                           `set_sites()` may take (`biharmonic_green_metric_bytes()`): more
+  ///                           sites are an `Input_error`, not an allocation that fails or
+  ///                           exhausts the machine}
+  ///     \cgalParamType{`double`}
+  ///     \cgalParamDefault{4 GiB}
+  ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
   /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than
@@ -134,6 +147,9 @@ public:
     CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+    m_maximum_bytes = CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::maximum_column_memory), 4294967296.);
+    CGAL_precondition_msg(m_maximum_bytes >= 0, "maximum_column_memory must not be negative");
     m_mesh = std::make_shared<const Indexed>(tm, vpm);
     auto green = std::make_shared<Green_function>();
     if(!green->build(m_mesh->points, m_mesh->triangles, m_mesh->face_component, m_mesh->number_of_components))
@@ -146,10 +162,20 @@ public:
   const Triangle_mesh& triangle_mesh() const { return *m_mesh->source_mesh; }
 
   /// Takes these sites: the columns of the sites kept from the previous call (same face,
-  /// same barycentric coordinates) are reused, those of the others computed.
-  /// \throws Input_error if a site is not in a face of the mesh
+  /// same barycentric coordinates) are reused, those of the others computed. The columns of
+  /// the previous sites that are not reused are freed before the new ones are computed.
+  /// \throws Input_error if a site is not in a face of the mesh, or if the columns of
+  ///         `sites` would take more than `maximum_column_memory`; the metric is then
+  ///         unchanged
   void set_sites(const std::vector<Face_location>& sites)
   {
+    const double bytes = biharmonic_green_metric_bytes(m_mesh->number_of_vertices(), sites.size());
+    if(bytes > m_maximum_bytes)
+      throw Input_error("Biharmonic_green_metric: the columns of " + std::to_string(sites.size()) + " sites on "
+                        + std::to_string(m_mesh->number_of_vertices()) + " vertices would take "
+                        + std::to_string(static_cast<long long>(std::ceil(bytes / 1048576.))) + " MiB, more than the "
+                        + std::to_string(static_cast<long long>(m_maximum_bytes / 1048576.))
+                        + " MiB of maximum_column_memory");
     const internal::Site_locator<TriangleMesh> locator(triangle_mesh(), *m_mesh, std::numeric_limits<double>::infinity());
     std::vector<Key> keys(sites.size());
     std::vector<Green_function::Point> points(sites.size());
@@ -179,6 +205,11 @@ public:
       else
         missing.push_back(i);
     }
+    // the columns not reused go before the new ones come (Lloyd moves every site: the peak
+    // would otherwise be twice the columns)
+    m_columns.clear();
+    m_keys.clear();
+    m_self.clear();
     compute_columns(points, missing, columns, self);
     m_columns = std::move(columns);
     m_self = std::move(self);
@@ -281,6 +312,7 @@ private:
   std::vector<Key> m_keys;
   std::vector<double> m_offset;                         // max_j (2 g(v, s_j) - g(s_j, s_j))
   std::size_t m_computed = 0;
+  double m_maximum_bytes = 0;
 };
 
 } // namespace Surface_voronoi

@@ -79,6 +79,7 @@ enum centroid_density_t { centroid_density };
 enum sample_border_t { sample_border };
 enum corner_angle_t { corner_angle };
 enum placed_sites_t { placed_sites };
+enum maximum_column_memory_t { maximum_column_memory };
 } // namespace internal_np
 
 namespace parameters {
@@ -285,6 +286,14 @@ unspecified_type corner_angle(const T& value);
 template <class T, class NamedParameters>
 unspecified_type corner_angle(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `maximum_column_memory`: the most bytes the
+/// columns of `Biharmonic_green_metric` may take for one set of sites (`double`).
+template <class T>
+unspecified_type maximum_column_memory(const T& value);
+/// The chain `chain` with `maximum_column_memory(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type maximum_column_memory(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
@@ -316,6 +325,7 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(sample_border)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(corner_angle)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(placed_sites)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_column_memory)
 // An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
 // density (a std::shared_ptr to a std::vector<double> by internal vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
