@@ -72,6 +72,10 @@ namespace Surface_voronoi {
 /// sites at one point, which the term \f$ \min_j d^2(v, s_j) \f$ common to all of them does not
 /// change, and the Green's function's diagonal \f$ g(v, v) \f$ it removes would take two solves
 /// per vertex. Power weights are in these squared units, those of \f$ g \f$ (area squared).
+/// For the same reason a diagram's `energy()` with this metric is not the biharmonic
+/// centroidal energy: at a vertex of its own cell a site's value is zero, and what is left is
+/// the excess of the interpolated values inside faces that cells cut (Lloyd's energies from
+/// this metric need not decrease).
 ///
 /// <b>Cost.</b> Memory: one column of `num_vertices(tm)` doubles per site (3,000 sites on a
 /// mesh of 20,000 vertices: 480 MB), bounded by the named parameter `maximum_column_memory`

@@ -163,6 +163,14 @@ def entries_for(mesh_name, real):
         for m in ("biharmonic", "euclidean", "geodesic"):
             add("%s/features" % m, ["--blue-noise", "300", "--seed", "1", "--metric", m, "--sharp-edges", "45",
                                     "--lloyd", "3", "--dual", "dual.off"], ("out.ply", "sites.xyz", "dual.off"))
+    if not real:
+        # the full spectrum (Biharmonic_green_metric): many sites, and the program's stages
+        # sharing it (Lloyd, sites added for a valid dual, the final diagram)
+        add("biharmonic_full/n2000", ["--sites", "@sites2000", "--metric", "biharmonic", "--dimension", "full",
+                                      "--dual", "dual.off"], ("out.ply", "sites.xyz", "dual.off"))
+        add("biharmonic_full/lloyd", ["--sites", "@sites100", "--metric", "biharmonic", "--dimension", "full",
+                                      "--lloyd", "5", "--dual", "dual.off", "--valid-dual"],
+            ("out.ply", "sites.xyz", "dual.off"))
     for m in METRICS if not real else ("biharmonic", "euclidean"):
         add("%s/lloyd" % m, ["--sites", "@sites100", "--metric", m, "--lloyd", "5", "--dual", "dual.off"],
             ("out.ply", "sites.xyz", "dual.off"))
