@@ -4,7 +4,8 @@
 // libFuzzer harness of the whole pipeline on small meshes: the bytes are decoded into a
 // polygon soup of at most 16 vertices (coordinates on a grid scaled by any power of two, so
 // overflow, underflow, needles and caps are all reachable), a few sites and weights, and a
-// metric. The soup goes through the program's checks (build_checked_triangle_mesh), the
+// metric (Euclidean, geodesic, biharmonic of the full spectrum or of dimension 10). The soup
+// goes through the program's checks (build_checked_triangle_mesh), the
 // library's validate_input(), then the diagram, whose invariants are checked:
 //  - nothing crashes, hangs or trips a sanitizer or a CGAL assertion;
 //  - an error is one of the package's exceptions (an input error or a numerical failure);
@@ -17,6 +18,7 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Biharmonic_green_metric.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
@@ -152,7 +154,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   try
   {
-    switch(choice % 3)
+    switch(choice % 4)
     {
       case 0:
       {
@@ -163,6 +165,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 1:
       {
         SV::Geodesic_metric<Mesh> metric(mesh);
+        run_diagram(mesh, metric, sites, weights);
+        break;
+      }
+      case 2:
+      {
+        // the full spectrum: a factorization of the Laplacian with one vertex held per
+        // component, and two solves per site
+        SV::Biharmonic_green_metric<Mesh> metric(mesh);
         run_diagram(mesh, metric, sites, weights);
         break;
       }
