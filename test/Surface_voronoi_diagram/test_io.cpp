@@ -2,12 +2,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Tests of the surface_voronoi program's input/output contract: the sites file grammar and
-// the checked reading of meshes (examples/Surface_voronoi_diagram/surface_voronoi/). Error
+// the checked reading of meshes, the arrangement's PLY (examples/Surface_voronoi_diagram/surface_voronoi/). Error
 // messages are part of the contract (the program prints them), so the tests check what they
 // name, not only that they throw.
 
 #include <surface_voronoi/read_checked_mesh.h>
 #include <surface_voronoi/sites_file.h>
+#include <surface_voronoi/write_arrangement_PLY.h>
+
+#include "test_support.h"
+#include <test_meshes.h>
+
+#include <CGAL/Surface_voronoi_diagram.h>
+#include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -759,6 +766,58 @@ TEST_CASE("IO check_triangle_mesh: works on Polyhedron_3", "[io][mesh]")
   REQUIRE_NOTHROW(SVIO::check_triangle_mesh(poly));
   poly.vertices_begin()->point() = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   REQUIRE_THROWS_WITH(SVIO::check_triangle_mesh(poly), "vertex 0 has a non-finite coordinate (nan)");
+}
+
+// The program streams its --output PLY from the diagram's cells: the bytes must be those
+// CGAL's writer gives for the arrangement as a Surface_mesh (the file's layout is a contract).
+TEST_CASE("IO arrangement PLY: the streamed file has CGAL's writer's bytes", "[io][ply]")
+{
+  typedef svd_test::Mesh Mesh;
+  for(int shape = 0; shape < 2; ++shape)
+  {
+    Mesh m;
+    std::vector<Point> sites;
+    if(shape == 0)
+    {
+      svd_test::meshes::make_torus(m, 1.0, 0.35, 40, 16);
+      for(const auto& l : svd_test::area_uniform_locations(m, 60, 3)) sites.push_back(svd_test::point_of(l, m));
+    }
+    else
+    {
+      // two components, the sites on one: the other's faces have no site (-1, grey)
+      svd_test::meshes::make_planar_grid(m, 12, 9);
+      Mesh far;
+      svd_test::meshes::make_planar_grid(far, 5, 4);
+      for(auto v : vertices(far)) far.point(v) = Point(far.point(v).x() + 3, far.point(v).y(), far.point(v).z());
+      const auto grid_faces = num_faces(m);
+      CGAL::copy_face_graph(far, m);
+      std::vector<svd_test::Location<Mesh> > in_grid;
+      for(const auto& l : svd_test::area_uniform_locations(m, 200, 5))
+        if(std::size_t(l.first) < grid_faces && in_grid.size() < 25) in_grid.push_back(l);
+      for(const auto& l : in_grid) sites.push_back(svd_test::point_of(l, m));
+    }
+    CGAL::Surface_voronoi::Euclidean_embedding<Mesh> metric(m);
+    const CGAL::Surface_voronoi_diagram<Mesh, CGAL::Surface_voronoi::Euclidean_embedding<Mesh> > vd(m, metric, sites);
+    REQUIRE(vd.statistics().cells == sites.size());
+    if(shape == 1) REQUIRE(vd.statistics().unreached_faces > 0);
+    for(int scale : { 0, 3, -2 })
+    {
+      std::ostringstream streamed(std::ios::out | std::ios::binary);
+      REQUIRE(SVIO::write_arrangement_binary_PLY(streamed, vd, scale));
+      auto arrangement = SVIO::arrangement_for_PLY(vd);
+      for(auto v : arrangement.vertices())
+      {
+        const auto p = arrangement.point(v);
+        arrangement.point(v) = decltype(p)(std::ldexp(p.x(), scale), std::ldexp(p.y(), scale), std::ldexp(p.z(), scale));
+      }
+      std::ostringstream reference(std::ios::out | std::ios::binary);
+      CGAL::IO::set_binary_mode(reference);
+      REQUIRE(CGAL::IO::write_PLY(reference, arrangement, "surface_voronoi arrangement"));
+      INFO("shape " << shape << ", scale " << scale);
+      REQUIRE(streamed.str().size() == reference.str().size());
+      CHECK(streamed.str() == reference.str());
+    }
+  }
 }
 
 } // namespace svd_test_io
