@@ -28,6 +28,11 @@
 //   machine of the benchmark a first touch costs about 10 microseconds per 4 KB page (3 s per
 //   GiB), and igea-537k's Euclidean diagram took 353k of them; with the advice, 55k, and the
 //   whole run 0.51x the time for 2 MiB more at the peak.
+// - The main heap, where the blocks below 4 MB live, gets the same advice as it grows, and
+//   grows 8 MB at a time (`M_TOP_PAD`), so that the 2 MB ranges its blocks are first written
+//   in lie inside it (glibc's `glibc.malloc.hugetlb=1` tunable does the same, but only from
+//   the environment at start-up). On boot with 10k sites, where most blocks are below 4 MB:
+//   compute 0.266 -> 0.212 s (medians of 5, interleaved), 2 MiB more at the peak.
 
 #include <cstddef>
 #include <cstdint>
@@ -44,8 +49,10 @@
 #endif
 
 #ifndef SVD_PROGRAM_KEEP_DEFAULT_ALLOCATION
+#include <atomic>
 #include <malloc.h>
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace svd_program {
@@ -64,6 +71,10 @@ namespace {
 constexpr std::size_t mapped_block_threshold = std::size_t(4) << 20;
 constexpr std::uintptr_t page = 4096;
 constexpr std::size_t heap_kept = std::size_t(16) << 20;
+constexpr std::size_t heap_step = std::size_t(8) << 20;
+
+// the end of the main heap as far as it has been advised (0: before main())
+std::atomic<std::uintptr_t> advised_heap_end{0};
 
 // The advice on the pages of a block of `n` bytes at `p`: for a block mapped on its own (all
 // of them from the threshold up), its whole mapping; the kernel backs by huge pages the 2 MB
@@ -77,6 +88,27 @@ void* advise_huge_pages(void* p, std::size_t n)
   return p;
 }
 
+// The advice on the main heap's new pages once it has grown: each growth is a mapping of its
+// own, without the advice of the one below, until advised (which merges them again).
+void advise_heap_growth()
+{
+  const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(sbrk(0));   // no system call
+  std::uintptr_t advised = advised_heap_end.load(std::memory_order_relaxed);
+  if(advised == 0 || end == advised || end == std::uintptr_t(-1)) return;
+  if(!advised_heap_end.compare_exchange_strong(advised, end, std::memory_order_relaxed)) return;
+  if(end < advised) return;   // trimmed: its next growth is advised from the new end
+  const std::uintptr_t begin = advised & ~(page - 1);
+  madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);   // advice: a refusal changes nothing
+}
+
+void* advise(void* p, std::size_t n)
+{
+  if(p == nullptr) return p;
+  if(n >= mapped_block_threshold) return advise_huge_pages(p, n);
+  advise_heap_growth();
+  return p;
+}
+
 } // namespace
 #endif
 
@@ -86,6 +118,8 @@ void set_large_block_policy()
 #ifndef SVD_PROGRAM_KEEP_DEFAULT_ALLOCATION
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(mapped_block_threshold));
   mallopt(M_TRIM_THRESHOLD, static_cast<int>(heap_kept));
+  mallopt(M_TOP_PAD, static_cast<int>(heap_step));
+  advised_heap_end.store(reinterpret_cast<std::uintptr_t>(sbrk(0)), std::memory_order_relaxed);   // from here up
 #endif
 }
 
@@ -97,13 +131,13 @@ void set_large_block_policy()
 // (glibc manual, "Replacing malloc"), and they call glibc's own, so every block still comes
 // from, and goes back to, the one allocator.
 extern "C" {
-void* malloc(std::size_t n) noexcept { return svd_program::advise_huge_pages(svd_program::__libc_malloc(n), n); }
+void* malloc(std::size_t n) noexcept { return svd_program::advise(svd_program::__libc_malloc(n), n); }
 void* calloc(std::size_t count, std::size_t size) noexcept
 {
   void* p = svd_program::__libc_calloc(count, size);
-  return p == nullptr ? p : svd_program::advise_huge_pages(p, count * size);   // no overflow: it succeeded
+  return p == nullptr ? p : svd_program::advise(p, count * size);   // no overflow: it succeeded
 }
-void* realloc(void* p, std::size_t n) noexcept { return svd_program::advise_huge_pages(svd_program::__libc_realloc(p, n), n); }
+void* realloc(void* p, std::size_t n) noexcept { return svd_program::advise(svd_program::__libc_realloc(p, n), n); }
 void free(void* p) noexcept { svd_program::__libc_free(p); }
 }
 #endif
