@@ -122,7 +122,8 @@ bool write_arrangement_binary_PLY(std::ostream& os, const Diagram& diagram, int 
     for(std::uint32_t id : piece.vertices) internal::append_bytes(buffer, static_cast<std::int32_t>(number[id]));
     const std::int32_t site = SV::internal::site_value<std::int32_t>(piece.site);
     internal::append_bytes(buffer, site);
-    const CGAL::IO::Color& color = site < 0 ? no_site_color : colors[std::size_t(site)];
+    const CGAL::IO::Color color = site < 0 ? no_site_color
+                                  : std::size_t(site) < colors.size() ? colors[std::size_t(site)] : SV::site_color(site);
     for(int k = 0; k < 4; ++k) internal::append_bytes(buffer, static_cast<unsigned char>(color[k]));
     if(buffer.size() >= flush_at && !flush()) return false;
   }
