@@ -742,4 +742,63 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
   CHECK(rounds_admitting >= 20);
 }
 
+// The pieces' compact vertex lists against std::vector: every operation the stitcher uses, across
+// the step from the four ids kept inside to a heap block, and back by shrinking.
+TEST_CASE("stitcher: Vertex_cycle behaves as a vector of ids, inline and on the heap", "[stitcher]")
+{
+  static_assert(sizeof(SVI::Vertex_cycle) == 24, "the point of the class is its size");
+  std::mt19937 random(7);
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    SVI::Vertex_cycle c;
+    std::vector<std::uint32_t> v;
+    const int steps = 1 + int(random() % 40);
+    for(int k = 0; k < steps; ++k)
+    {
+      const unsigned what = random() % 8;
+      if(what <= 2) { const std::uint32_t id = std::uint32_t(random()); c.push_back(id); v.push_back(id); }
+      else if(what == 3 && !v.empty()) { c.pop_back(); v.pop_back(); }
+      else if(what == 4) { const std::size_t n = random() % 12; c.resize(n); v.resize(n, 0); }
+      else if(what == 5)
+      {
+        std::vector<std::uint32_t> ids(random() % 10);
+        for(auto& id : ids) id = std::uint32_t(random());
+        c.assign(ids.begin(), ids.end());
+        v = ids;
+      }
+      else if(what == 6 && !v.empty())
+      {
+        // what the stitcher does with the points it finds on a piece's edge
+        const std::size_t at = random() % (v.size() + 1);
+        std::vector<std::size_t> ids(random() % 6);
+        for(auto& id : ids) id = std::size_t(random() % 1000);
+        c.insert(c.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
+        v.insert(v.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
+      }
+      else c.reserve(random() % 16);
+      REQUIRE(c.size() == v.size());
+      REQUIRE(std::equal(c.begin(), c.end(), v.begin(), v.end()));
+    }
+    const SVI::Vertex_cycle copy = c;
+    SVI::Vertex_cycle assigned;
+    assigned.push_back(1);
+    assigned = copy;
+    SVI::Vertex_cycle moved = std::move(c);
+    CHECK(c.empty());
+    CHECK(copy == moved);
+    CHECK(assigned == moved);
+    SVI::Vertex_cycle move_assigned;
+    for(int k = 0; k < 9; ++k) move_assigned.push_back(std::uint32_t(k));
+    move_assigned = std::move(moved);
+    CHECK(std::equal(move_assigned.begin(), move_assigned.end(), v.begin(), v.end()));
+    if(!v.empty())
+    {
+      CHECK(move_assigned.front() == v.front());
+      CHECK(move_assigned.back() == v.back());
+      move_assigned[0] ^= 1u;
+      CHECK(move_assigned != copy);
+    }
+  }
+}
+
 } // namespace svd_test_stitcher

@@ -18,8 +18,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-
-#include <boost/container/small_vector.hpp>
+#include <CGAL/Surface_voronoi_diagram/internal/Vertex_cycle.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -44,7 +43,7 @@ struct Partition
   };
   /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (a heap block per
   /// piece was a million allocations and frees on a 537k-vertex mesh), in 32 bits.
-  typedef boost::container::small_vector<std::uint32_t, 4> Vertex_cycle;
+  typedef internal::Vertex_cycle Vertex_cycle;
 
   struct Piece
   {
