@@ -742,20 +742,22 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
   CHECK(rounds_admitting >= 20);
 }
 
-// The pieces' compact vertex lists against std::vector: every operation the stitcher uses, across
-// the step from the four ids kept inside to a heap block, and back by shrinking.
-TEST_CASE("stitcher: Vertex_cycle behaves as a vector of ids, inline and on the heap", "[stitcher]")
+// The compact small vector of the pieces' vertex ids and the faces' candidates, against
+// std::vector: every operation the pipeline uses, across the step from the elements kept inside
+// to a heap block, and back by shrinking.
+TEST_CASE("stitcher: Small_vector behaves as a vector, inline and on the heap", "[stitcher]")
 {
-  static_assert(sizeof(SVI::Vertex_cycle) == 24, "the point of the class is its size");
+  static_assert(sizeof(SVI::Partition::Vertex_cycle) == 24, "the point of the class is its size");
+  static_assert(sizeof(SVI::Candidate_list) == 72, "the point of the class is its size");
   std::mt19937 random(7);
   for(int trial = 0; trial < 200; ++trial)
   {
-    SVI::Vertex_cycle c;
+    SVI::Partition::Vertex_cycle c;
     std::vector<std::uint32_t> v;
     const int steps = 1 + int(random() % 40);
     for(int k = 0; k < steps; ++k)
     {
-      const unsigned what = random() % 8;
+      const unsigned what = random() % 9;
       if(what <= 2) { const std::uint32_t id = std::uint32_t(random()); c.push_back(id); v.push_back(id); }
       else if(what == 3 && !v.empty()) { c.pop_back(); v.pop_back(); }
       else if(what == 4) { const std::size_t n = random() % 12; c.resize(n); v.resize(n, 0); }
@@ -775,19 +777,26 @@ TEST_CASE("stitcher: Vertex_cycle behaves as a vector of ids, inline and on the 
         c.insert(c.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
         v.insert(v.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
       }
+      else if(what == 7 && !v.empty())
+      {
+        const std::size_t a = random() % v.size(), b = a + random() % (v.size() - a + 1);
+        const auto at = c.erase(c.begin() + std::ptrdiff_t(a), c.begin() + std::ptrdiff_t(b));
+        REQUIRE(at == c.begin() + std::ptrdiff_t(a));
+        v.erase(v.begin() + std::ptrdiff_t(a), v.begin() + std::ptrdiff_t(b));
+      }
       else c.reserve(random() % 16);
       REQUIRE(c.size() == v.size());
       REQUIRE(std::equal(c.begin(), c.end(), v.begin(), v.end()));
     }
-    const SVI::Vertex_cycle copy = c;
-    SVI::Vertex_cycle assigned;
+    const SVI::Partition::Vertex_cycle copy = c;
+    SVI::Partition::Vertex_cycle assigned;
     assigned.push_back(1);
     assigned = copy;
-    SVI::Vertex_cycle moved = std::move(c);
+    SVI::Partition::Vertex_cycle moved = std::move(c);
     CHECK(c.empty());
     CHECK(copy == moved);
     CHECK(assigned == moved);
-    SVI::Vertex_cycle move_assigned;
+    SVI::Partition::Vertex_cycle move_assigned;
     for(int k = 0; k < 9; ++k) move_assigned.push_back(std::uint32_t(k));
     move_assigned = std::move(moved);
     CHECK(std::equal(move_assigned.begin(), move_assigned.end(), v.begin(), v.end()));
@@ -799,6 +808,25 @@ TEST_CASE("stitcher: Vertex_cycle behaves as a vector of ids, inline and on the 
       CHECK(move_assigned != copy);
     }
   }
+}
+
+TEST_CASE("stitcher: Small_vector of candidates: growth from its own element, sort, shrink", "[stitcher]")
+{
+  SVI::Candidate_list list;
+  for(std::uint32_t s = 0; s < 2; ++s) list.push_back(SVI::Candidate(s, {{ double(s), 0., 1. }}));
+  list.push_back(list[0]);   // the vector grows to the heap while `list[0]` is read
+  list.push_back(list[1]);
+  list.push_back(SVI::Candidate(9, {{ -1., 2., 3. }}, 1));
+  REQUIRE(list.size() == 5);
+  CHECK(list[2].site == 0);
+  CHECK(list[3].site == 1);
+  CHECK(list[3].value[0] == 1.);
+  CHECK(list[4].from_edge == 1);
+  std::sort(list.begin(), list.end(), [](const SVI::Candidate& a, const SVI::Candidate& b) { return a.site > b.site; });
+  CHECK(list[0].site == 9);
+  list.resize(1);
+  CHECK(list.size() == 1);
+  CHECK(SVI::values_of(list, 9)[2] == 3.);
 }
 
 } // namespace svd_test_stitcher

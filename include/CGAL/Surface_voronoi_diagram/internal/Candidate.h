@@ -18,7 +18,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <boost/container/small_vector.hpp>
+#include <CGAL/Surface_voronoi_diagram/internal/Small_vector.h>
 
 #include <algorithm>
 #include <array>
@@ -51,7 +51,7 @@ struct Candidate
 
 /// The candidates of one face: most faces have one or two (1.7 on average with 10k sites),
 /// kept inline, so that a million faces are not a million heap blocks to allocate and free.
-typedef boost::container::small_vector<Candidate, 2> Candidate_list;
+typedef Small_vector<Candidate, 2> Candidate_list;
 typedef std::vector<Candidate_list> Candidate_lists;   // one list per face
 
 /// (value, site) compared lexicographically: ties go to the lower site index everywhere,

@@ -18,7 +18,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Vertex_cycle.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Small_vector.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -43,7 +43,7 @@ struct Partition
   };
   /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (a heap block per
   /// piece was a million allocations and frees on a 537k-vertex mesh), in 32 bits.
-  typedef internal::Vertex_cycle Vertex_cycle;
+  typedef Small_vector<std::uint32_t, 4> Vertex_cycle;
 
   struct Piece
   {
