@@ -79,16 +79,14 @@ constexpr std::size_t heap_step = std::size_t(4) << 20;
 // the end of the main heap as far as it has been advised (0: before main())
 std::atomic<std::uintptr_t> advised_heap_end{0};
 
-// The advice on the pages of a block of `n` bytes at `p`: for a block mapped on its own (all
-// of them from the threshold up), its whole mapping; the kernel backs by huge pages the 2 MB
-// ranges of it that are aligned.
-void* advise_huge_pages(void* p, std::size_t n)
+// The advice on the pages of a block of `n` bytes at `p`, mapped on its own (all blocks from
+// the threshold up): its whole mapping; the kernel backs by huge pages the 2 MB ranges of it
+// that are aligned.
+void advise_mapped_block(void* p, std::size_t n)
 {
-  if(p == nullptr || n < mapped_block_threshold) return p;
   const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(p) & ~(page - 1);
   const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(p) + n + page - 1) & ~(page - 1);
   madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);   // advice: a refusal changes nothing
-  return p;
 }
 
 // The advice on the main heap's new pages once it has grown: each growth is a mapping of its
@@ -104,11 +102,14 @@ void advise_heap_growth()
   madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);   // advice: a refusal changes nothing
 }
 
+// The advice for a block just allocated (or null): on its own mapping, or on the heap it grew.
 void* advise(void* p, std::size_t n)
 {
   if(p == nullptr) return p;
-  if(n >= mapped_block_threshold) return advise_huge_pages(p, n);
-  advise_heap_growth();
+  if(n >= mapped_block_threshold)
+    advise_mapped_block(p, n);
+  else
+    advise_heap_growth();
   return p;
 }
 

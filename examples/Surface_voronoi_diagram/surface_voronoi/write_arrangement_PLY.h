@@ -72,7 +72,8 @@ bool write_arrangement_binary_PLY(std::ostream& os, const Diagram& diagram, int 
 {
   namespace SV = CGAL::Surface_voronoi;
   CGAL_precondition_msg(!diagram.is_cancelled(), "the diagram was cancelled: it has no cells");
-  const SV::internal::Partition& partition = SV::internal::Diagram_access::data(diagram).partition;
+  const auto& data = SV::internal::Diagram_access::data(diagram);
+  const SV::internal::Partition& partition = data.partition;
   constexpr std::uint32_t unnumbered = std::uint32_t(-1);
   std::vector<std::uint32_t> number(partition.vertices.size(), unnumbered);
   std::vector<std::uint32_t> order;   // partition vertex ids by output number
@@ -97,7 +98,7 @@ bool write_arrangement_binary_PLY(std::ostream& os, const Diagram& diagram, int 
      << "\nproperty list uchar int vertex_indices\nproperty int site\nproperty uchar red\nproperty uchar green"
      << "\nproperty uchar blue\nproperty uchar alpha\nend_header\n";
   // a site's colour once, not once for each of its faces
-  std::vector<CGAL::IO::Color> colors(SV::internal::Diagram_access::data(diagram).sites.size());
+  std::vector<CGAL::IO::Color> colors(data.sites.size());
   for(std::size_t i = 0; i < colors.size(); ++i) colors[i] = SV::site_color(std::int64_t(i));
   const CGAL::IO::Color no_site_color = SV::site_color(-1);
   std::string buffer;
