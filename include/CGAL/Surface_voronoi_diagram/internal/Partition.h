@@ -20,6 +20,8 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Small_vector.h>
 
+#include <CGAL/assertions.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -31,24 +33,39 @@ namespace internal {
 /// the site index of what no site reaches
 constexpr std::size_t no_site = std::size_t(-1);
 
+/// A site index stored in 32 bits, read and written as a `std::size_t` that keeps `no_site`.
+class Site_index_32
+{
+public:
+  Site_index_32(std::size_t site = no_site) : m_site(site == no_site ? none : static_cast<std::uint32_t>(site))
+  {
+    CGAL_precondition_msg(site == no_site || site < none, "too many sites for 32-bit indices");
+  }
+  operator std::size_t() const { return m_site == none ? no_site : std::size_t(m_site); }
+
+private:
+  static constexpr std::uint32_t none = 0xffffffffu;
+  std::uint32_t m_site;
+};
+
 struct Partition
 {
   enum Location_kind : std::uint8_t { AT_CORNER, ON_EDGE, IN_FACE };
-  struct Vertex
+  struct Vertex   // 40 bytes: a million-face mesh's diagram has about as many
   {
     Point_d point;
+    double t;                // ON_EDGE: parameter from the edge's lower vertex index
+    std::uint32_t element;   // mesh vertex, mesh edge or face (32-bit, as Indexed_mesh)
     Location_kind kind;
-    std::size_t element;   // mesh vertex, mesh edge or face
-    double t;              // ON_EDGE: parameter from the edge's lower vertex index
   };
   /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (a heap block per
   /// piece was a million allocations and frees on a 537k-vertex mesh), in 32 bits.
   typedef Small_vector<std::uint32_t, 4> Vertex_cycle;
 
-  struct Piece
+  struct Piece   // 40 bytes: a million-face mesh's diagram has more pieces than faces
   {
     std::uint32_t face;
-    std::size_t site;      // no_site where no site reaches
+    Site_index_32 site;    // no_site where no site reaches
     Vertex_cycle vertices;   // counter-clockwise, as the face
     double area;
   };

@@ -64,7 +64,6 @@ public:
     m_out = &out;
     out = Partition();
     name_vertices();
-    place_vertices();
     weld_exact_ties();
     release_naming();
     insert_edge_points();
@@ -73,8 +72,8 @@ public:
   }
 
 private:
-  // A vertex id's key, and a face whose candidate list holds every site of the key.
-  // (32-bit indices: a million-face mesh names about as many vertices)
+  // A vertex id's key, and the face that named it, whose candidate list holds every site of
+  // the key. (32-bit indices: a million-face mesh names about as many vertices)
   struct Origin
   {
     Vertex_key key;
@@ -103,11 +102,15 @@ private:
     }
   }
 
+  // A new vertex, placed where face f's values put its key: the first face to name a key
+  // places it, so the faces on both sides of an edge share its position bit for bit.
   std::size_t new_id(const Vertex_key& k, std::size_t f)
   {
-    CGAL_precondition_msg(m_origins.size() < std::size_t(0xffffffffu), "too many partition vertices for 32-bit ids");
-    m_origins.push_back(Origin{ k, std::uint32_t(f) });
-    return m_origins.size() - 1;
+    std::vector<Partition::Vertex>& vertices = m_out->vertices;
+    CGAL_precondition_msg(vertices.size() < std::size_t(0xffffffffu), "too many partition vertices for 32-bit ids");
+    vertices.push_back(vertex_at(k, f));
+    if(m_keep_keys) m_origins.push_back(Origin{ k, std::uint32_t(f) });
+    return vertices.size() - 1;
   }
 
   // The id of a key, seen from face f. Without hashing: corners by mesh vertex; bisector
@@ -148,12 +151,40 @@ private:
       m_edge_crossings.push_back(Edge_crossing_entry{ std::uint32_t(e), k.sites[0], k.sites[1], std::uint32_t(id) });
       return id;
     }
-    for(std::size_t id = m_triple_begin; id < m_origins.size(); ++id)
-      if(m_origins[id].key == k) return id;
-    return new_id(k, f);
+    for(const std::pair<Vertex_key, std::uint32_t>& x : m_face_triples)
+      if(x.first == k) return x.second;
+    const std::size_t id = new_id(k, f);
+    m_face_triples.emplace_back(k, std::uint32_t(id));
+    return id;
   }
 
-  // Step 1: every piece as a list of vertex ids; faces nobody reached are one piece of no site.
+  // Calls `begin_piece(site, number_of_vertices)` for each piece of face f in order, each
+  // followed by `key(k)` for each of its vertices in order. A face reached by nobody, or owned
+  // whole by its only candidate (as the cutter's one piece would be), is one piece: its three
+  // corners.
+  template <class BeginPiece, class Key>
+  void visit_face(std::size_t f, const BeginPiece& begin_piece, const Key& key) const
+  {
+    if(m_candidates[f].empty() || m_cuts[f].whole_face)
+    {
+      begin_piece(m_candidates[f].empty() ? no_site : m_candidates[f][0].site, std::size_t(3));
+      for(int k = 0; k < 3; ++k) key(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]));
+      return;
+    }
+    for(const Face_cuts::Piece sp : m_cuts[f].pieces)
+    {
+      begin_piece(m_candidates[f][sp.candidate].site, sp.vertices.size());
+      for(const Symbolic_vertex& v : sp.vertices) key(key_of(f, sp.candidate, v));
+    }
+  }
+
+  std::size_t number_of_pieces(std::size_t f) const
+  {
+    return (m_candidates[f].empty() || m_cuts[f].whole_face) ? 1 : m_cuts[f].pieces.size();
+  }
+
+  // Step 1: every piece as a list of vertex ids, and every vertex placed; faces nobody
+  // reached are one piece of no site. The keys are kept only for the exact ties' welding.
   void name_vertices()
   {
     const std::size_t nf = m_mesh.number_of_faces();
@@ -161,39 +192,29 @@ private:
     m_corner_id.assign(m_mesh.number_of_vertices(), no_site);
     m_edge_crossings_begin.assign(nf + 1, 0);
     m_face_degenerate.assign(nf, 0);
+    for(std::size_t f = 0; f < nf; ++f) m_face_degenerate[f] = m_cuts[f].degenerate;
+    m_keep_keys = std::find(m_face_degenerate.begin(), m_face_degenerate.end(), 1) != m_face_degenerate.end();
     out.face_begin.assign(nf + 1, 0);
+    std::size_t pieces = 0;
+    for(std::size_t f = 0; f < nf; ++f) pieces += number_of_pieces(f);
     // reserved, since growing by doubling moved every piece built so far and touched fresh
     // pages each time; vertices: the corners, and about three more per piece beyond one a face
-    std::size_t pieces = 0;
-    for(std::size_t f = 0; f < nf; ++f)
-      pieces += (m_candidates[f].empty() || m_cuts[f].whole_face) ? 1 : m_cuts[f].pieces.size();
     out.pieces.reserve(pieces);
-    m_origins.reserve(m_mesh.number_of_vertices() + 3 * (pieces - (std::min)(pieces, nf)));
+    const std::size_t expected_vertices = m_mesh.number_of_vertices() + 3 * (pieces - (std::min)(pieces, nf));
+    out.vertices.reserve(expected_vertices);
+    if(m_keep_keys) m_origins.reserve(expected_vertices);
+    m_edge_crossings.reserve(2 * (pieces - (std::min)(pieces, nf)) + 16);   // about one per piece beyond one a face
     for(std::size_t f = 0; f < nf; ++f)
     {
       out.face_begin[f] = out.pieces.size();
       m_edge_crossings_begin[f] = m_edge_crossings.size();
-      m_triple_begin = m_origins.size();
-      m_face_degenerate[f] = m_cuts[f].degenerate;
-      // a face in one piece, its three corners in order: reached by nobody, or owned whole by
-      // its only candidate (as the cutter's one piece would be)
-      if(m_candidates[f].empty() || m_cuts[f].whole_face)
-      {
-        Partition::Piece p{ std::uint32_t(f), m_candidates[f].empty() ? no_site : m_candidates[f][0].site, {}, 0. };
-        p.vertices.reserve(3);
-        for(int k = 0; k < 3; ++k)
-          p.vertices.push_back(id_of(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]), f));
-        out.pieces.push_back(std::move(p));
-        continue;
-      }
-      for(const Face_cuts::Piece sp : m_cuts[f].pieces)
-      {
-        Partition::Piece p{ std::uint32_t(f), m_candidates[f][sp.candidate].site, {}, 0. };
-        p.vertices.reserve(sp.vertices.size());
-        for(const Symbolic_vertex& v : sp.vertices)
-          p.vertices.push_back(id_of(key_of(f, sp.candidate, v), f));
-        out.pieces.push_back(std::move(p));
-      }
+      m_face_triples.clear();
+      visit_face(f,
+                 [&](std::size_t site, std::size_t n) {
+                   out.pieces.push_back(Partition::Piece{ std::uint32_t(f), site, {}, 0. });
+                   out.pieces.back().vertices.reserve(n);
+                 },
+                 [&](const Vertex_key& k) { out.pieces.back().vertices.push_back(std::uint32_t(id_of(k, f))); });
     }
     out.face_begin[nf] = out.pieces.size();
     m_edge_crossings_begin[nf] = m_edge_crossings.size();
@@ -201,37 +222,26 @@ private:
 
   const double* values_of(std::size_t f, std::uint32_t site) const { return internal::values_of(m_candidates[f], site); }
 
-  // Step 2: one position per key, computed from the values of its sites in its origin face.
-  void place_vertices()
+  // A key's vertex, placed by the values of its sites in face f.
+  Partition::Vertex vertex_at(const Vertex_key& k, std::size_t f) const
   {
-    Partition& out = *m_out;
-    out.vertices.resize(m_origins.size());
-    parallel_for_each_index(m_origins.size(), m_parallel, [&](std::size_t id) {
-      const Vertex_key& k = m_origins[id].key;
-      const std::size_t f = m_origins[id].face;
-      if(k.kind == Vertex_key::MESH_VERTEX)
-      {
-        out.vertices[id] = Partition::Vertex{ m_mesh.points[k.element], Partition::AT_CORNER, static_cast<std::size_t>(k.element), 0. };
-      }
-      else if(k.kind == Vertex_key::EDGE_CROSSING)
-      {
-        const std::size_t e = static_cast<std::size_t>(k.element);
-        const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
-        const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
-        const double t = edge_crossing_parameter(values_of(f, k.sites[0]), values_of(f, k.sites[1]), ca, cb);
-        const Point_d& pa = m_mesh.points[va];
-        const Point_d& pb = m_mesh.points[vb];
-        out.vertices[id] = Partition::Vertex{ pa + t * (pb - pa), Partition::ON_EDGE, e, t };
-      }
-      else
-      {
-        const Barycentric b = triple_point_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]));
-        out.vertices[id] = Partition::Vertex{ m_mesh.point_at(f, b), Partition::IN_FACE, f, 0. };
-      }
-    });
-    m_representative.resize(m_origins.size());
-    for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
+    if(k.kind == Vertex_key::MESH_VERTEX)
+      return Partition::Vertex{ m_mesh.points[k.element], 0., k.element, Partition::AT_CORNER };
+    if(k.kind == Vertex_key::EDGE_CROSSING)
+    {
+      const std::size_t e = static_cast<std::size_t>(k.element);
+      const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
+      const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
+      const double t = edge_crossing_parameter(values_of(f, k.sites[0]), values_of(f, k.sites[1]), ca, cb);
+      const Point_d& pa = m_mesh.points[va];
+      const Point_d& pb = m_mesh.points[vb];
+      return Partition::Vertex{ pa + t * (pb - pa), t, k.element, Partition::ON_EDGE };
+    }
+    const Barycentric b = triple_point_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]));
+    return Partition::Vertex{ m_mesh.point_at(f, b), 0., std::uint32_t(f), Partition::IN_FACE };
   }
+
+  bool is_representative(std::size_t id) const { return m_representative.empty() || m_representative[id] == id; }
 
   bool exact_triple_barycentric(std::size_t f, const Vertex_key& k, std::array<Exact_number, 3>& b) const
   {
@@ -308,8 +318,10 @@ private:
   void weld_exact_ties()
   {
     const std::size_t nf = m_mesh.number_of_faces();
-    if(std::find(m_face_degenerate.begin(), m_face_degenerate.end(), 1) == m_face_degenerate.end()) return;
+    if(!m_keep_keys) return;
     Partition& out = *m_out;
+    m_representative.resize(out.vertices.size());
+    for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
     std::map<Exact_location, std::size_t, Exact_location_less> groups;
     std::vector<std::uint8_t> seen(m_origins.size(), 0);
     for(std::size_t f = 0; f < nf; ++f)
@@ -332,9 +344,9 @@ private:
               const std::size_t cid = id_of(Vertex_key::mesh_vertex(l.element), m_origins[id].face);
               if(cid >= m_representative.size())
               {
+                // named just now: no piece had that corner as a corner
                 m_representative.push_back(cid);
                 seen.push_back(1);
-                out.vertices.push_back(Partition::Vertex{ m_mesh.points[l.element], Partition::AT_CORNER, l.element, 0. });
               }
               m_representative[id] = cid;
               continue;
@@ -346,7 +358,7 @@ private:
             {
               // a triple point exactly on a mesh edge: it becomes an edge vertex
               out.vertices[id].kind = Partition::ON_EDGE;
-              out.vertices[id].element = l.element;
+              out.vertices[id].element = std::uint32_t(l.element);
               out.vertices[id].t = CGAL::to_double(l.c[0]);
             }
           }
@@ -372,6 +384,7 @@ private:
   void release_naming()
   {
     std::vector<Origin>().swap(m_origins);
+    std::vector<std::pair<Vertex_key, std::uint32_t> >().swap(m_face_triples);
     std::vector<std::size_t>().swap(m_corner_id);
     std::vector<Edge_crossing_entry>().swap(m_edge_crossings);
     std::vector<std::size_t>().swap(m_edge_crossings_begin);
@@ -389,14 +402,14 @@ private:
     CGAL_precondition(out.vertices.size() < std::size_t(std::uint32_t(-1)));
     std::vector<std::uint32_t> edge_begin(ne + 1, 0);
     for(std::size_t id = 0; id < out.vertices.size(); ++id)
-      if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
+      if(is_representative(id) && out.vertices[id].kind == Partition::ON_EDGE)
         ++edge_begin[out.vertices[id].element + 1];
     for(std::size_t e = 0; e < ne; ++e) edge_begin[e + 1] += edge_begin[e];
     std::vector<Edge_point> edge_points(edge_begin[ne]);
     {
       std::vector<std::uint32_t> next(edge_begin.begin(), edge_begin.end() - 1);
       for(std::size_t id = 0; id < out.vertices.size(); ++id)
-        if(m_representative[id] == id && out.vertices[id].kind == Partition::ON_EDGE)
+        if(is_representative(id) && out.vertices[id].kind == Partition::ON_EDGE)
           edge_points[next[out.vertices[id].element]++] = Edge_point{ out.vertices[id].t, id };
     }
     for(std::size_t e = 0; e < ne; ++e)
@@ -631,13 +644,14 @@ private:
   const Face_cuts& m_cuts;
   bool m_parallel;
   Partition* m_out = nullptr;
-  std::vector<Origin> m_origins;                      // by vertex id
+  bool m_keep_keys = false;                           // some face has an exact tie
+  std::vector<Origin> m_origins;                      // by vertex id, if m_keep_keys
+  std::vector<std::pair<Vertex_key, std::uint32_t> > m_face_triples;   // the current face's
   std::vector<std::size_t> m_corner_id;               // by mesh vertex
   std::vector<Edge_crossing_entry> m_edge_crossings;  // grouped by the face that named them
   std::vector<std::size_t> m_edge_crossings_begin;
-  std::size_t m_triple_begin = 0;                     // triple points of the current face start here
   std::vector<std::uint8_t> m_face_degenerate;
-  std::vector<std::size_t> m_representative;          // after weld_exact_ties
+  std::vector<std::size_t> m_representative;          // by weld_exact_ties, if m_keep_keys
 };
 
 /// Builds the partition from the candidate lists and the per-face cuts.
