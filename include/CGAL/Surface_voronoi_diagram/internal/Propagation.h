@@ -136,7 +136,7 @@ public:
       auto no_ban = [](std::size_t, std::size_t) { return false; };
       drain(m_front, no_ban, nullptr);
     }
-    for(Candidate_list& list : candidates) clean_candidate_list(list);
+    parallel_for_each_index(candidates.size(), m_parallel, [this](std::size_t f) { clean_candidate_list(candidates[f]); });
   }
 
   /// Frees what a repair's propagation reads besides the candidates (the faces' links and
@@ -315,7 +315,7 @@ private:
   {
     const std::size_t nf = m_mesh.number_of_faces();
     m_links.resize(nf);
-    for(std::size_t f = 0; f < nf; ++f)
+    parallel_for_each_index(nf, m_parallel, [this](std::size_t f) {
       for(int k = 0; k < 3; ++k)
       {
         Face_link& l = m_links[f];
@@ -330,6 +330,7 @@ private:
         l.fresh_vertex[k] = static_cast<std::uint32_t>(m_mesh.triangles[g][3 - a - b]);
         l.shared_corners[k] = static_cast<std::uint8_t>(a | (b << 2));
       }
+    });
   }
 
   // The first propagation in `count` blocks (see the file's comment). Each block's faces are
