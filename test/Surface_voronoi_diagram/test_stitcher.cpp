@@ -829,4 +829,22 @@ TEST_CASE("stitcher: Small_vector of candidates: growth from its own element, so
   CHECK(SVI::values_of(list, 9)[2] == 3.);
 }
 
+// A partition has about as many vertices, and more pieces, than the mesh has faces: both are
+// 40 bytes, their site index in 32 bits that still reads as the library's `no_site`.
+TEST_CASE("stitcher: partition vertices and pieces are 40 bytes, their site index keeps no_site", "[stitcher]")
+{
+  static_assert(sizeof(SVI::Partition::Vertex) == 40, "a vertex: point, parameter, 32-bit element, kind");
+  static_assert(sizeof(SVI::Partition::Piece) == 40, "a piece: face, 32-bit site, vertex cycle, area");
+  for(std::size_t site : { std::size_t(0), std::size_t(1), std::size_t(0xfffffffeu), SVI::no_site })
+  {
+    const SVI::Site_index_32 stored(site);
+    CHECK(std::size_t(stored) == site);
+  }
+  SVI::Partition::Piece p{ 7, SVI::no_site, {}, 0. };
+  CHECK(p.site == SVI::no_site);
+  p.site = 12;
+  CHECK(p.site == 12u);
+  CHECK(p.site != SVI::no_site);
+}
+
 } // namespace svd_test_stitcher
