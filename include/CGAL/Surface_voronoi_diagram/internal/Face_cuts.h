@@ -40,13 +40,14 @@ namespace internal {
 
 class Face_cuts
 {
-  struct Face_record
+  struct Face_record   // 12 bytes, a million on a million-face mesh
   {
-    std::uint32_t chunk = 0;
-    std::uint32_t first_piece = 0;        // in its chunk
-    std::uint32_t number_of_pieces = 0;   // up to one per candidate, which are not bounded
-    bool whole_face = false;
-    bool degenerate = false;
+    Face_record() : chunk(0), first_piece(0), number_of_pieces(0), whole_face(0), degenerate(0) {}
+    std::uint32_t chunk;
+    std::uint32_t first_piece;             // in its chunk
+    std::uint32_t number_of_pieces : 30;   // up to one per candidate
+    std::uint32_t whole_face : 1;
+    std::uint32_t degenerate : 1;
   };
   struct Piece_record
   {
@@ -131,8 +132,8 @@ public:
   Cut operator[](std::size_t f) const
   {
     const Face_record& r = m_faces[f];
-    return Cut{ Pieces(r.number_of_pieces == 0 ? nullptr : &m_chunks[r.chunk], r.first_piece, r.number_of_pieces), r.degenerate,
-                r.whole_face };
+    return Cut{ Pieces(r.number_of_pieces == 0 ? nullptr : &m_chunks[r.chunk], r.first_piece, r.number_of_pieces), r.degenerate != 0,
+                r.whole_face != 0 };
   }
 
   /// every face without a cut (reached by nobody)
@@ -206,6 +207,7 @@ private:
       r.first_piece = std::uint32_t(pieces.size());
       r.whole_face = c.whole_face;
       r.degenerate = c.degenerate;
+      CGAL_precondition_msg(c.pieces.size() < (std::size_t(1) << 30), "too many pieces in one face");
       r.number_of_pieces = std::uint32_t(c.pieces.size());
       for(const Symbolic_piece& p : c.pieces)
       {

@@ -120,8 +120,8 @@ private:
   {
     if(k.kind == Vertex_key::MESH_VERTEX)
     {
-      std::size_t& id = m_corner_id[static_cast<std::size_t>(k.element)];
-      if(id == no_site) id = new_id(k, f);
+      std::uint32_t& id = m_corner_id[static_cast<std::size_t>(k.element)];
+      if(id == no_id) id = std::uint32_t(new_id(k, f));
       return id;
     }
     if(k.kind == Vertex_key::EDGE_CROSSING)
@@ -189,7 +189,7 @@ private:
   {
     const std::size_t nf = m_mesh.number_of_faces();
     Partition& out = *m_out;
-    m_corner_id.assign(m_mesh.number_of_vertices(), no_site);
+    m_corner_id.assign(m_mesh.number_of_vertices(), no_id);
     m_edge_crossings_begin.assign(nf + 1, 0);
     m_face_degenerate.assign(nf, 0);
     for(std::size_t f = 0; f < nf; ++f) m_face_degenerate[f] = m_cuts[f].degenerate;
@@ -207,7 +207,7 @@ private:
     for(std::size_t f = 0; f < nf; ++f)
     {
       out.face_begin[f] = out.pieces.size();
-      m_edge_crossings_begin[f] = m_edge_crossings.size();
+      m_edge_crossings_begin[f] = std::uint32_t(m_edge_crossings.size());
       m_face_triples.clear();
       visit_face(f,
                  [&](std::size_t site, std::size_t n) {
@@ -217,7 +217,7 @@ private:
                  [&](const Vertex_key& k) { out.pieces.back().vertices.push_back(std::uint32_t(id_of(k, f))); });
     }
     out.face_begin[nf] = out.pieces.size();
-    m_edge_crossings_begin[nf] = m_edge_crossings.size();
+    m_edge_crossings_begin[nf] = std::uint32_t(m_edge_crossings.size());
   }
 
   const double* values_of(std::size_t f, std::uint32_t site) const { return internal::values_of(m_candidates[f], site); }
@@ -385,9 +385,9 @@ private:
   {
     std::vector<Origin>().swap(m_origins);
     std::vector<std::pair<Vertex_key, std::uint32_t> >().swap(m_face_triples);
-    std::vector<std::size_t>().swap(m_corner_id);
+    std::vector<std::uint32_t>().swap(m_corner_id);
     std::vector<Edge_crossing_entry>().swap(m_edge_crossings);
-    std::vector<std::size_t>().swap(m_edge_crossings_begin);
+    std::vector<std::uint32_t>().swap(m_edge_crossings_begin);
     std::vector<std::uint8_t>().swap(m_face_degenerate);
   }
 
@@ -647,9 +647,10 @@ private:
   bool m_keep_keys = false;                           // some face has an exact tie
   std::vector<Origin> m_origins;                      // by vertex id, if m_keep_keys
   std::vector<std::pair<Vertex_key, std::uint32_t> > m_face_triples;   // the current face's
-  std::vector<std::size_t> m_corner_id;               // by mesh vertex
+  static constexpr std::uint32_t no_id = std::uint32_t(-1);
+  std::vector<std::uint32_t> m_corner_id;             // by mesh vertex (ids are 32-bit)
   std::vector<Edge_crossing_entry> m_edge_crossings;  // grouped by the face that named them
-  std::vector<std::size_t> m_edge_crossings_begin;
+  std::vector<std::uint32_t> m_edge_crossings_begin;
   std::vector<std::uint8_t> m_face_degenerate;
   std::vector<std::size_t> m_representative;          // by weld_exact_ties, if m_keep_keys
 };
