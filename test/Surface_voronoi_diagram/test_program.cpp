@@ -553,7 +553,8 @@ std::string shell_quoted(const std::string& s)
   return q + "'";
 }
 
-Run run_program(const Temp_dir& dir, const std::vector<std::string>& args)
+// `environment`: assignments put before the command, such as "SVD_HUGE_PAGES=0"
+Run run_program(const Temp_dir& dir, const std::vector<std::string>& args, const std::string& environment = std::string())
 {
   static int counter = 0;
   ++counter;
@@ -570,8 +571,8 @@ Run run_program(const Temp_dir& dir, const std::vector<std::string>& args)
   r.command = shell_quoted(SVD_PROGRAM);
   for(const std::string& a : args)
     r.command += " " + shell_quoted(a);
-  const std::string full = r.command + " <" + shell_quoted("/dev/null") + " >" + shell_quoted(out.string()) +
-                           " 2>" + shell_quoted(err.string());
+  const std::string full = (environment.empty() ? std::string() : environment + " ") + r.command + " <" +
+                           shell_quoted("/dev/null") + " >" + shell_quoted(out.string()) + " 2>" + shell_quoted(err.string());
   const int status = std::system(full.c_str());
   if(status != -1 && WIFEXITED(status))
     r.code = WEXITSTATUS(status);
@@ -2387,6 +2388,30 @@ TEST_CASE("program: coordinates near 1e308 and 1e-310 work, the outputs in the i
         }
       }
   // ordinary meshes are not scaled (the regression matrix checks them bit for bit)
+}
+
+// The program's memory policy (huge pages or not) is not allowed to change a bit of its outputs.
+TEST_CASE("program: SVD_HUGE_PAGES=0 leaves out the huge-page advice and changes no output", "[program]")
+{
+  Temp_dir dir;
+  const Soup sphere = octahedral_sphere(5);   // 4098 vertices
+  write_mesh(dir / "sphere.off", sphere);
+  for(const std::string metric : { "euclidean", "geodesic" })
+  {
+    INFO("metric " << metric);
+    auto args = [&](const std::string& name) {
+      return std::vector<std::string>{ (dir / "sphere.off").string(), "--random", "300", "--seed", "3", "--metric", metric,
+                                       "--output", (dir / (name + ".ply")).string(), "--sites-out", (dir / (name + ".txt")).string() };
+    };
+    const Run advised = run_program(dir, args("advised"));
+    const Run plain = run_program(dir, args("plain"), "SVD_HUGE_PAGES=0");
+    check_success(advised);
+    check_success(plain);
+    CHECK(plain.err == advised.err);
+    CHECK(read_bytes(dir / "plain.ply") == read_bytes(dir / "advised.ply"));
+    CHECK(read_bytes(dir / "plain.txt") == read_bytes(dir / "advised.txt"));
+    CHECK(!read_bytes(dir / "plain.ply").empty());
+  }
 }
 
 TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 naming --no-refine", "[program][numerics]")
