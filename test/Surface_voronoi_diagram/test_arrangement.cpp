@@ -5,6 +5,7 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <test_meshes.h>
 #include <CGAL/boost/graph/Dual.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/dijkstra_shortest_paths.h>
 #include <CGAL/boost/graph/graph_traits_Surface_mesh.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
@@ -130,6 +131,65 @@ TEST_CASE("arrangement: Surface_mesh and Polyhedron_3 inputs and outputs agree",
   std::size_t voronoi_vertices = 0;
   for(auto v : vertices(out_m)) voronoi_vertices += vv_m[v];
   CHECK(voronoi_vertices > sites.size());
+}
+
+// The indexed copy numbers a compact Surface_mesh by its own indices and stores nothing; a mesh
+// with removed elements (not collected) is numbered through stored maps. Both must give the
+// diagram of the compacted mesh.
+TEST_CASE("arrangement: a Surface_mesh with removed elements gives the diagram of its compacted copy", "[arrangement]")
+{
+  Mesh compact;
+  GEN::make_torus(compact, 1.0, 0.35, 30, 12);
+  // the same torus after a removed vertex, face and edge at the front of each range
+  Mesh holey;
+  const Mesh::Vertex_index v0 = holey.add_vertex(Point(9, 9, 9)), v1 = holey.add_vertex(Point(9, 9, 10)),
+                           v2 = holey.add_vertex(Point(9, 10, 9));
+  const Mesh::Face_index f0 = holey.add_face(v0, v1, v2);
+  REQUIRE(f0 != Mesh::null_face());
+  CGAL::copy_face_graph(compact, holey);
+  std::vector<Mesh::Edge_index> e0;
+  for(auto h : CGAL::halfedges_around_face(halfedge(f0, holey), holey)) e0.push_back(edge(h, holey));
+  holey.remove_face(f0);
+  for(auto e : e0) holey.remove_edge(e);
+  for(auto v : { v0, v1, v2 }) holey.remove_vertex(v);
+  REQUIRE(holey.has_garbage());
+  // (BGL's num_faces() of a Surface_mesh counts the removed ones too)
+  REQUIRE(holey.number_of_faces() == compact.number_of_faces());
+  REQUIRE(holey.number_of_vertices() == compact.number_of_vertices());
+
+  SV::internal::Indexed_mesh<Mesh> ic(compact, get(CGAL::vertex_point, compact)), ih(holey, get(CGAL::vertex_point, holey));
+  CHECK(ic.vertex_handles.is_identity());
+  CHECK(ic.face_handles.is_identity());
+  CHECK_FALSE(ih.vertex_handles.is_identity());
+  CHECK_FALSE(ih.face_handles.is_identity());
+  REQUIRE(ih.number_of_vertices() == holey.number_of_vertices());
+  REQUIRE(ih.number_of_faces() == holey.number_of_faces());
+  for(std::size_t i = 0; i < ih.number_of_vertices(); ++i)
+  {
+    CHECK(get(ih.vertex_index, ih.vertex_handles[i]) == i);
+    CHECK(get(ic.vertex_index, ic.vertex_handles[i]) == i);
+    CHECK_FALSE(holey.is_removed(ih.vertex_handles[i]));
+  }
+  for(std::size_t i = 0; i < ih.number_of_faces(); ++i)
+  {
+    CHECK(get(ih.face_index, ih.face_handles[i]) == i);
+    CHECK(get(ic.face_index, ic.face_handles[i]) == i);
+    CHECK_FALSE(holey.is_removed(ih.face_handles[i]));
+  }
+
+  std::vector<Point> sites;
+  for(const auto& l : area_uniform_locations(compact, 40, 2)) sites.push_back(point_of(l, compact));
+  SV::Euclidean_embedding<Mesh> ec(compact), eh(holey);
+  CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > dc(compact, ec, sites), dh(holey, eh, sites);
+  check_invariants(dc);
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    CHECK(dh.cell_area(i) == Approx(dc.cell_area(i)).epsilon(1e-12));
+  // the same owner at each vertex (copy_face_graph may list the vertices in another order)
+  std::map<Point, std::size_t> owners_c, owners_h;
+  for(auto v : vertices(compact)) owners_c[compact.point(v)] = dc.site_of(v);
+  for(auto v : vertices(holey)) owners_h[holey.point(v)] = dh.site_of(v);
+  CHECK(owners_c.size() == compact.number_of_vertices());
+  CHECK(owners_c == owners_h);
 }
 
 TEST_CASE("arrangement: Boost.Graph connected_components and dijkstra run on it", "[arrangement][bgl]")

@@ -847,4 +847,53 @@ TEST_CASE("stitcher: partition vertices and pieces are 40 bytes, their site inde
   CHECK(p.site != SVI::no_site);
 }
 
+TEST_CASE("stitcher: the packed candidate table reads back every list, and unpacks to the same lists", "[stitcher]")
+{
+  std::mt19937 rng(5);
+  for(bool parallel : { false, true })
+  {
+    // empty lists, inline ones, and lists on the heap, over more faces than a parallel chunk
+    SVI::Candidate_lists lists(10000);
+    for(std::size_t f = 0; f < lists.size(); ++f)
+      for(std::size_t k = 0, n = std::size_t(rng() % 6); k < n; ++k)
+        lists[f].push_back(SVI::Candidate(std::uint32_t(rng() % 1000), {{ double(rng()), double(f), double(k) }},
+                                          std::uint8_t(rng() % 4)));
+    const SVI::Candidate_lists original = lists;
+    const SVI::Candidate_table table(std::move(lists), parallel);
+    CHECK(lists.empty());
+    REQUIRE(table.size() == original.size());
+    std::size_t total = 0;
+    auto same = [](const SVI::Candidate& a, const SVI::Candidate& b) {
+      return a.site == b.site && a.from_edge == b.from_edge && a.value == b.value;
+    };
+    for(std::size_t f = 0; f < original.size(); ++f)
+    {
+      const SVI::Candidate_table::List l = table[f];
+      REQUIRE(l.size() == original[f].size());
+      CHECK(l.empty() == original[f].empty());
+      for(std::size_t k = 0; k < l.size(); ++k) CHECK(same(l[k], original[f][k]));
+      for(std::size_t k = 0; k < l.size(); ++k)
+      {
+        // the values of a site's first candidate in the list
+        const double* v = SVI::values_of(l, l[k].site);
+        REQUIRE(v != nullptr);
+        CHECK(*v == *SVI::values_of(original[f], l[k].site));
+      }
+      CHECK(SVI::values_of(l, 1000u) == nullptr);
+      total += l.size();
+    }
+    CHECK(table.number_of_candidates() == total);
+    const SVI::Candidate_lists back = table.to_lists();
+    REQUIRE(back.size() == original.size());
+    for(std::size_t f = 0; f < original.size(); ++f)
+    {
+      REQUIRE(back[f].size() == original[f].size());
+      for(std::size_t k = 0; k < back[f].size(); ++k) CHECK(same(back[f][k], original[f][k]));
+    }
+  }
+  const SVI::Candidate_table none;
+  CHECK(none.size() == 0);
+  CHECK(none.empty());
+}
+
 } // namespace svd_test_stitcher

@@ -940,6 +940,8 @@ int run_main(int argc, char** argv)
           std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << r.edges_split
                     << " edges split, " << num_vertices(refined) << " vertices; --no-refine to keep it)" << std::endl;
         }
+        else
+          refined = Mesh();   // an unchanged copy, not read again: at igea-537k its 70 MB go to the diagram
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
       if(args.insert_sites)

@@ -90,7 +90,9 @@ inline void clean_candidate_list(Candidate_list& list)
 }
 
 /// the values of `site` on face `f`, or null if it is not a candidate there
-inline const double* values_of(const Candidate_list& list, std::uint32_t site)
+// `List`: a `Candidate_list` or a `Candidate_table::List`
+template <class List>
+const double* values_of(const List& list, std::uint32_t site)
 {
   for(const Candidate& x : list)
     if(x.site == site) return x.value.data();

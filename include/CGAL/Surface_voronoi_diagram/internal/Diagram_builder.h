@@ -158,13 +158,15 @@ public:
       d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, propagation.candidates, m_cuts, d.sites, embedding_of(m_fields),
                                                    d.centroid_density.get()).run();
       d.statistics.broken_cells = 0;
-      d.candidates = std::move(propagation.candidates);
+      d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
       summarize(regions_of_site);
       m_timer.stop("cutting");
       return progress(1.);
     }
     propagation.release_working_state();   // a repair after stitching builds it again
-    stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
+    // packed for stitching, where the memory peaks; a repair after it unpacks them
+    d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
+    stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
     m_timer.stop("cutting");
 
     for(;; ++round)
@@ -185,11 +187,13 @@ public:
       if(broken == 0 || global_nearest || !m_settings.repair || round >= m_settings.max_repair_rounds)
         break;
       ban_orphan_pieces(d.sites, d.partition, components, banned, dirty);
+      propagation.candidates = d.candidates.to_lists();
+      d.candidates.clear();
       repair_round();
-      stitch(m_mesh, propagation.candidates, m_cuts, d.partition, m_settings.parallel);
+      d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
+      stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
       if(!round_done()) return false;
     }
-    d.candidates = std::move(propagation.candidates);
     summarize(regions_of_site);
     m_timer.stop("repair");
     return progress(1.);

@@ -19,7 +19,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
@@ -43,7 +43,7 @@ struct Diagram_data
   std::vector<std::size_t> merged_into;          // by site: the site owning its cell, or no_site
   std::vector<std::pair<std::size_t, std::size_t> > breakline_site_faces;   // (site, face): where sites on breaklines start
   std::unique_ptr<Embedding_values> embedding;   // embedding metrics only
-  Candidate_lists candidates;                    // after propagation and repair
+  Candidate_table candidates;                    // after propagation and repair
   Partition partition;                           // empty when the cells were measured on the cuts
   Cell_measures measures;                        // Lloyd's diagrams: the cells measured on the cuts
   std::shared_ptr<const std::vector<double> > centroid_density;   // Lloyd's: by vertex, or null

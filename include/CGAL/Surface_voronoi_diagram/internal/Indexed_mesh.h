@@ -29,16 +29,95 @@
 #include <CGAL/Dynamic_property_map.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
+
+// Whether descriptors of a graph are numbered like indices (`Surface_mesh`'s): converted to
+// and from an integer. Whether the numbering is the index order is checked at run time.
+template <class Descriptor, class = void>
+struct Is_numbered_descriptor : std::false_type {};
+template <class Descriptor>
+struct Is_numbered_descriptor<Descriptor, decltype(void(static_cast<std::size_t>(std::declval<const Descriptor&>())),
+                                                    void(Descriptor(std::uint32_t(0))))> : std::true_type {};
+
+// Index -> descriptor and descriptor -> index of one kind of element. Where the descriptors
+// are the indices themselves (a `Surface_mesh` without removed elements) nothing is stored,
+// which spares 8 bytes a vertex and a face on the meshes the package is built for.
+template <class Descriptor, class DynamicIndexMap>
+class Element_numbering
+{
+public:
+  typedef std::uint32_t Index;
+
+  /// index -> descriptor
+  Descriptor operator[](std::size_t i) const { return m_identity ? make(i, Is_numbered_descriptor<Descriptor>()) : m_handles[i]; }
+  std::size_t size() const { return m_size; }
+
+  /// the descriptor -> index property map (a handle: copies read the same numbering)
+  struct Index_map
+  {
+    typedef Descriptor key_type;
+    typedef Index value_type;
+    typedef Index reference;
+    typedef boost::readable_property_map_tag category;
+
+    bool identity = false;
+    std::optional<DynamicIndexMap> map;
+    friend Index get(const Index_map& m, const Descriptor& d)
+    {
+      return m.identity ? Index(number(d, Is_numbered_descriptor<Descriptor>())) : get(*m.map, d);
+    }
+  };
+  const Index_map& index_map() const { return m_index; }
+
+  template <class Range, class Graph, class DynamicTag>
+  void build(const Range& elements, const Graph& g, DynamicTag tag)
+  {
+    m_size = 0;
+    m_identity = Is_numbered_descriptor<Descriptor>::value;
+    for(const Descriptor& d : elements)
+    {
+      m_identity = m_identity && number(d, Is_numbered_descriptor<Descriptor>()) == m_size;
+      ++m_size;
+    }
+    m_handles.clear();
+    m_index = Index_map();
+    m_index.identity = m_identity;
+    if(m_identity) return;
+    m_index.map = get(tag, g);
+    m_handles.reserve(m_size);
+    for(const Descriptor& d : elements)
+    {
+      put(*m_index.map, d, Index(m_handles.size()));
+      m_handles.push_back(d);
+    }
+  }
+
+  bool is_identity() const { return m_identity; }
+
+  static Descriptor make(std::size_t i, std::true_type) { return Descriptor(static_cast<std::uint32_t>(i)); }
+  static Descriptor make(std::size_t, std::false_type) { CGAL_assertion(false); return Descriptor(); }
+  static std::size_t number(const Descriptor& d, std::true_type) { return static_cast<std::size_t>(d); }
+  static std::size_t number(const Descriptor&, std::false_type) { return std::size_t(-1); }
+
+private:
+  bool m_identity = false;
+  std::size_t m_size = 0;
+  std::vector<Descriptor> m_handles;
+  Index_map m_index;
+};
 
 template <class TriangleMesh>
 struct Indexed_mesh
@@ -53,9 +132,12 @@ struct Indexed_mesh
   typedef std::uint32_t Index;
   static constexpr Index none = Index(-1);
 
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<Index> >::const_type Dynamic_vertex_index_map;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<Index> >::const_type Dynamic_face_index_map;
+
   const TriangleMesh* source_mesh = nullptr;                     // the mesh this is a copy of
-  std::vector<vertex_descriptor> vertex_handles;                 // index -> descriptor
-  std::vector<face_descriptor> face_handles;
+  Element_numbering<vertex_descriptor, Dynamic_vertex_index_map> vertex_handles;   // index -> descriptor
+  Element_numbering<face_descriptor, Dynamic_face_index_map> face_handles;
   std::vector<Point_d> points;
   std::vector<std::array<Index, 3> > triangles;                  // corners, counter-clockwise
   // Local edge k of a face joins corners k and k+1; its neighbour across, or `none` on a border.
@@ -68,9 +150,9 @@ struct Indexed_mesh
   double total_area = 0;
   double bbox_diagonal = 0;
 
-  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<Index> >::const_type Vertex_index_map;
-  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<Index> >::const_type Face_index_map;
-  Vertex_index_map vertex_index;
+  typedef typename Element_numbering<vertex_descriptor, Dynamic_vertex_index_map>::Index_map Vertex_index_map;
+  typedef typename Element_numbering<face_descriptor, Dynamic_face_index_map>::Index_map Face_index_map;
+  Vertex_index_map vertex_index;                                 // descriptor -> index
   Face_index_map face_index;
 
   Indexed_mesh() {}
@@ -88,22 +170,12 @@ struct Indexed_mesh
     CGAL_precondition_msg(num_vertices(tm) < std::size_t(none) && num_faces(tm) < std::size_t(none) / 2,
                           "the mesh has too many elements for 32-bit indices");
     source_mesh = &tm;
-    vertex_index = get(CGAL::dynamic_vertex_property_t<Index>(), tm);
-    face_index = get(CGAL::dynamic_face_property_t<Index>(), tm);
-    vertex_handles.reserve(num_vertices(tm));
-    points.reserve(num_vertices(tm));
-    for(vertex_descriptor v : vertices(tm))
-    {
-      put(vertex_index, v, Index(vertex_handles.size()));
-      vertex_handles.push_back(v);
-      points.push_back(to_point_d(get(vpm, v)));
-    }
-    face_handles.reserve(num_faces(tm));
-    for(face_descriptor f : faces(tm))
-    {
-      put(face_index, f, Index(face_handles.size()));
-      face_handles.push_back(f);
-    }
+    vertex_handles.build(vertices(tm), tm, CGAL::dynamic_vertex_property_t<Index>());
+    face_handles.build(faces(tm), tm, CGAL::dynamic_face_property_t<Index>());
+    vertex_index = vertex_handles.index_map();
+    face_index = face_handles.index_map();
+    points.reserve(vertex_handles.size());
+    for(vertex_descriptor v : vertices(tm)) points.push_back(to_point_d(get(vpm, v)));
 
     const std::size_t nf = face_handles.size();
     triangles.resize(nf);

@@ -72,14 +72,17 @@ public:
   {
     m_dimension = metric.dimension();
     CGAL_precondition_msg(m_dimension > 0, "the embedding has dimension 0");
-    const std::size_t n = mesh.number_of_vertices();
-    m_vertex_coordinates.resize(n * m_dimension);
-    for(std::size_t v = 0; v < n; ++v)
+    if(!(m_dimension == 3 && coordinates_are_points(mesh, metric)))
     {
-      metric.coordinates(mesh.vertex_handles[v], m_vertex_coordinates.data() + v * m_dimension);
-      for(std::size_t k = 0; k < m_dimension; ++k)
-        CGAL_precondition_msg(std::isfinite(m_vertex_coordinates[v * m_dimension + k]),
-                              "the embedding of a vertex is not finite");
+      const std::size_t n = mesh.number_of_vertices();
+      m_vertex_coordinates.resize(n * m_dimension);
+      for(std::size_t v = 0; v < n; ++v)
+      {
+        metric.coordinates(mesh.vertex_handles[v], m_vertex_coordinates.data() + v * m_dimension);
+        for(std::size_t k = 0; k < m_dimension; ++k)
+          CGAL_precondition_msg(std::isfinite(m_vertex_coordinates[v * m_dimension + k]),
+                                "the embedding of a vertex is not finite");
+      }
     }
     m_site_coordinates.assign(sites.size() * m_dimension, 0.);
     m_weights.resize(sites.size());
@@ -88,7 +91,7 @@ public:
       m_weights[i] = sites[i].weight;
       for(int k = 0; k < 3; ++k)
       {
-        const double* x = &m_vertex_coordinates[mesh.triangles[sites[i].face][k] * m_dimension];
+        const double* x = vertex_coordinates(mesh.triangles[sites[i].face][k]);
         for(std::size_t c = 0; c < m_dimension; ++c)
           m_site_coordinates[i * m_dimension + c] += sites[i].barycentric[k] * x[c];
       }
@@ -113,10 +116,32 @@ public:
 
   std::size_t dimension() const { return m_dimension; }
   const double* site_coordinates(std::size_t i) const { return &m_site_coordinates[i * m_dimension]; }
-  const double* vertex_coordinates(std::size_t v) const { return &m_vertex_coordinates[v * m_dimension]; }
+  const double* vertex_coordinates(std::size_t v) const
+  {
+    return m_points ? &(*m_points)[v].x() : &m_vertex_coordinates[v * m_dimension];
+  }
 
 private:
+  // Whether the embedding is the mesh's own points (the Euclidean one): they are then read
+  // from the indexed mesh, which the diagram owns, instead of copied (24 bytes a vertex).
+  template <class Metric, class TriangleMesh>
+  bool coordinates_are_points(const Indexed_mesh<TriangleMesh>& mesh, const Metric& metric)
+  {
+    for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+    {
+      double c[3];
+      metric.coordinates(mesh.vertex_handles[v], c);
+      const Point_d& p = mesh.points[v];
+      if(!(c[0] == p.x() && c[1] == p.y() && c[2] == p.z())) return false;
+      CGAL_precondition_msg(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]),
+                            "the embedding of a vertex is not finite");
+    }
+    m_points = &mesh.points;
+    return true;
+  }
+
   std::size_t m_dimension = 0;
+  const std::vector<Point_d>* m_points = nullptr;   // the mesh's, when they are the coordinates
   std::vector<double> m_vertex_coordinates, m_site_coordinates, m_weights;
 };
 

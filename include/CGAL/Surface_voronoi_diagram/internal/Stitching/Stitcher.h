@@ -23,7 +23,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
@@ -40,6 +40,7 @@
 #include <limits>
 #include <map>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -54,7 +55,7 @@ public:
 
   /// With `parallel`, the steps that work vertex by vertex, piece by piece or face by face
   /// run in concurrent chunks; naming the vertices (ids in face order) stays sequential.
-  Stitcher(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts, bool parallel = false)
+  Stitcher(const Mesh& mesh, const Candidate_table& candidates, const Face_cuts& cuts, bool parallel = false)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_parallel(parallel)
   {}
 
@@ -640,7 +641,7 @@ private:
   }
 
   const Mesh& m_mesh;
-  const Candidate_lists& m_candidates;
+  const Candidate_table& m_candidates;
   const Face_cuts& m_cuts;
   bool m_parallel;
   Partition* m_out = nullptr;
@@ -657,10 +658,19 @@ private:
 
 /// Builds the partition from the candidate lists and the per-face cuts.
 template <class TriangleMesh>
-void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
+void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_table& candidates,
             const Face_cuts& cuts, Partition& out, bool parallel = false)
 {
   Stitcher<TriangleMesh>(mesh, candidates, cuts, parallel).run(out);
+}
+
+/// The same from lists that may still grow (a packed copy is stitched).
+template <class TriangleMesh>
+void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
+            const Face_cuts& cuts, Partition& out, bool parallel = false)
+{
+  Candidate_lists copy = candidates;
+  stitch(mesh, Candidate_table(std::move(copy)), cuts, out, parallel);
 }
 
 } // namespace internal

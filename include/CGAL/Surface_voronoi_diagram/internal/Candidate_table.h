@@ -1,0 +1,116 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// The faces' candidate lists once they no longer change, in one array. The propagation grows
+// a list per face (`Candidate_lists`, room for two candidates inline: 72 bytes a face); most
+// faces end with one candidate, so the final lists take about half as much packed one after
+// another (32 bytes a candidate and 4 a face). Stitching and everything after it read them
+// here; a repair after stitching unpacks them again (`to_lists()`).
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+
+#include <CGAL/assertions.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_voronoi {
+namespace internal {
+
+class Candidate_table
+{
+public:
+  /// the candidates of one face
+  class List
+  {
+  public:
+    List(const Candidate* begin, const Candidate* end) : m_begin(begin), m_end(end) {}
+    const Candidate* begin() const { return m_begin; }
+    const Candidate* end() const { return m_end; }
+    std::size_t size() const { return std::size_t(m_end - m_begin); }
+    bool empty() const { return m_begin == m_end; }
+    const Candidate& operator[](std::size_t i) const { CGAL_assertion(i < size()); return m_begin[i]; }
+
+  private:
+    const Candidate* m_begin;
+    const Candidate* m_end;
+  };
+
+  Candidate_table() = default;
+
+  /// packs `lists`, which are left empty (their memory freed as they are read)
+  explicit Candidate_table(Candidate_lists&& lists, bool parallel = false)
+  {
+    const std::size_t nf = lists.size();
+    m_first.resize(nf + 1);
+    m_first[0] = 0;
+    std::size_t total = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      total += lists[f].size();
+      CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
+      m_first[f + 1] = static_cast<std::uint32_t>(total);
+    }
+    m_items.resize(total);
+    parallel_for_each_index(nf, parallel, [&](std::size_t f) {
+      std::copy(lists[f].begin(), lists[f].end(), m_items.begin() + m_first[f]);
+      lists[f] = Candidate_list();   // frees a list on the heap
+    });
+    Candidate_lists().swap(lists);
+  }
+
+  /// the number of faces
+  std::size_t size() const { return m_first.empty() ? 0 : m_first.size() - 1; }
+  bool empty() const { return size() == 0; }
+  /// the number of candidates of all faces
+  std::size_t number_of_candidates() const { return m_items.size(); }
+
+  List operator[](std::size_t f) const
+  {
+    CGAL_assertion(f < size());
+    return List(m_items.data() + m_first[f], m_items.data() + m_first[f + 1]);
+  }
+
+  /// the lists again, for a propagation to grow them
+  Candidate_lists to_lists() const
+  {
+    Candidate_lists lists(size());
+    for(std::size_t f = 0; f < lists.size(); ++f)
+    {
+      const List l = (*this)[f];
+      lists[f].assign(l.begin(), l.end());
+    }
+    return lists;
+  }
+
+  void clear()
+  {
+    std::vector<std::uint32_t>().swap(m_first);
+    std::vector<Candidate>().swap(m_items);
+  }
+
+private:
+  std::vector<std::uint32_t> m_first;   // face f's candidates: m_items[m_first[f]] .. m_items[m_first[f + 1]]
+  std::vector<Candidate> m_items;
+};
+
+} // namespace internal
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H
