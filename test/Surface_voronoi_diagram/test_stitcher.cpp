@@ -10,6 +10,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Four_ary_heap.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -21,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <queue>
 #include <functional>
 #include <random>
 #include <set>
@@ -894,6 +896,60 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
   const SVI::Candidate_table none;
   CHECK(none.size() == 0);
   CHECK(none.empty());
+}
+
+TEST_CASE("propagation: the four-ary heap pops what std::priority_queue pops", "[stitcher]")
+{
+  // events as the propagation's: a key with many ties, broken by site then face
+  struct Ev { double key; std::uint32_t site, face; };
+  struct Later
+  {
+    bool operator()(const Ev& a, const Ev& b) const
+    {
+      if(a.key != b.key) return a.key > b.key;
+      if(a.site != b.site) return a.site > b.site;
+      return a.face > b.face;
+    }
+  };
+  std::mt19937 rng(11);
+  SVI::Four_ary_heap<Ev, Later> heap;
+  std::priority_queue<Ev, std::vector<Ev>, Later> reference;
+  std::uint32_t next_face = 0;
+  std::size_t popped = 0;
+  for(int round = 0; round < 20000; ++round)
+  {
+    // bursts of pushes and of pops, so that the heap grows and shrinks through several levels
+    const bool growing = (round / 500) % 2 == 0;
+    const bool push = reference.empty() || (growing ? rng() % 4 != 0 : rng() % 4 == 0);
+    if(push)
+    {
+      const Ev e{ double(rng() % 50), std::uint32_t(rng() % 7), next_face++ };
+      heap.push(e);
+      reference.push(e);
+    }
+    else
+    {
+      REQUIRE(!heap.empty());
+      const Ev a = heap.top(), b = reference.top();
+      CHECK((a.key == b.key && a.site == b.site && a.face == b.face));
+      heap.pop();
+      reference.pop();
+      ++popped;
+    }
+    REQUIRE(heap.size() == reference.size());
+  }
+  while(!reference.empty())
+  {
+    const Ev a = heap.top(), b = reference.top();
+    CHECK((a.key == b.key && a.site == b.site && a.face == b.face));
+    heap.pop();
+    reference.pop();
+    ++popped;
+  }
+  CHECK(heap.empty());
+  CHECK(popped == next_face);
+  heap.release();
+  CHECK(heap.size() == 0);
 }
 
 } // namespace svd_test_stitcher

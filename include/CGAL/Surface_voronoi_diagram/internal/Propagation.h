@@ -30,13 +30,13 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Four_ary_heap.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <queue>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -243,7 +243,7 @@ private:
   // What one order of events works with: the whole mesh's, or one block's in a round.
   struct Front
   {
-    std::priority_queue<Event, std::vector<Event>, Later> queue;
+    Four_ary_heap<Event, Later> queue;
     std::vector<std::array<double, 3> > values;
     std::vector<std::uint32_t> free_slots;
     Flat_hash_table<Key_slot<std::uint64_t> > offered;   // the offers beyond a face's inline ones
@@ -516,7 +516,7 @@ private:
   static void release_queue(Front& front)
   {
     CGAL_assertion(front.queue.empty());
-    front.queue = decltype(front.queue)();
+    front.queue.release();
     std::vector<std::array<double, 3> >().swap(front.values);
     std::vector<std::uint32_t>().swap(front.free_slots);
   }
