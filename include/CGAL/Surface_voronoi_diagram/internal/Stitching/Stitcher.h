@@ -200,6 +200,7 @@ private:
     for(std::size_t f = 0; f < nf; ++f) pieces += number_of_pieces(f);
     // reserved, since growing by doubling moved every piece built so far and touched fresh
     // pages each time; vertices: the corners, and about three more per piece beyond one a face
+    CGAL_precondition_msg(pieces < std::size_t(0xffffffffu), "too many partition pieces for 32-bit offsets");
     out.pieces.reserve(pieces);
     const std::size_t expected_vertices = m_mesh.number_of_vertices() + 3 * (pieces - (std::min)(pieces, nf));
     out.vertices.reserve(expected_vertices);
@@ -207,7 +208,7 @@ private:
     m_edge_crossings.reserve(2 * (pieces - (std::min)(pieces, nf)) + 16);   // about one per piece beyond one a face
     for(std::size_t f = 0; f < nf; ++f)
     {
-      out.face_begin[f] = out.pieces.size();
+      out.face_begin[f] = std::uint32_t(out.pieces.size());
       m_edge_crossings_begin[f] = std::uint32_t(m_edge_crossings.size());
       m_face_triples.clear();
       visit_face(f,
@@ -217,7 +218,7 @@ private:
                  },
                  [&](const Vertex_key& k) { out.pieces.back().vertices.push_back(std::uint32_t(id_of(k, f))); });
     }
-    out.face_begin[nf] = out.pieces.size();
+    out.face_begin[nf] = std::uint32_t(out.pieces.size());
     m_edge_crossings_begin[nf] = std::uint32_t(m_edge_crossings.size());
   }
 
