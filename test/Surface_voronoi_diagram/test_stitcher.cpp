@@ -107,7 +107,7 @@ std::unique_ptr<St_run> st_run_fields(const St_mesh& m, const std::vector<std::v
     if(f % 2) SVI::clean_candidate_list(r.candidates[f]);
     r.cuts.set(f, SVI::Face_cutter(r.candidates[f]).cut());
   }
-  SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
+  SVI::stitch(r.mesh, SVI::Candidate_table(SVI::Candidate_lists(r.candidates)), r.cuts, r.part);   // packed, as the builder does
   return run;
 }
 
@@ -470,7 +470,7 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
       else
         r.cuts.set(f, SVI::Face_cutter(r.candidates[f]).cut());
     }
-    SVI::stitch(r.mesh, r.candidates, r.cuts, r.part);
+    SVI::stitch(r.mesh, SVI::Candidate_table(SVI::Candidate_lists(r.candidates)), r.cuts, r.part);   // packed, as the builder does
     // each site located in a face holding a piece of it (the last such face)
     std::vector<SVI::Site> located(sites.size());
     for(const SVI::Partition::Piece& p : r.part.pieces)

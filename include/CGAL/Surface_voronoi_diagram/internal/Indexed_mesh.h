@@ -62,7 +62,7 @@ public:
   typedef std::uint32_t Index;
 
   /// index -> descriptor
-  Descriptor operator[](std::size_t i) const { return m_identity ? make(i, Is_numbered_descriptor<Descriptor>()) : m_handles[i]; }
+  Descriptor operator[](std::size_t i) const { return m_index.identity ? make(i, Is_numbered_descriptor<Descriptor>()) : m_handles[i]; }
   std::size_t size() const { return m_size; }
 
   /// the descriptor -> index property map (a handle: copies read the same numbering)
@@ -86,16 +86,16 @@ public:
   void build(const Range& elements, const Graph& g, DynamicTag tag)
   {
     m_size = 0;
-    m_identity = Is_numbered_descriptor<Descriptor>::value;
+    bool identity = Is_numbered_descriptor<Descriptor>::value;
     for(const Descriptor& d : elements)
     {
-      m_identity = m_identity && number(d, Is_numbered_descriptor<Descriptor>()) == m_size;
+      identity = identity && number(d, Is_numbered_descriptor<Descriptor>()) == m_size;
       ++m_size;
     }
     m_handles.clear();
     m_index = Index_map();
-    m_index.identity = m_identity;
-    if(m_identity) return;
+    m_index.identity = identity;
+    if(identity) return;
     m_index.map = get(tag, g);
     m_handles.reserve(m_size);
     for(const Descriptor& d : elements)
@@ -105,7 +105,7 @@ public:
     }
   }
 
-  bool is_identity() const { return m_identity; }
+  bool is_identity() const { return m_index.identity; }
 
   static Descriptor make(std::size_t i, std::true_type) { return Descriptor(static_cast<std::uint32_t>(i)); }
   static Descriptor make(std::size_t, std::false_type) { CGAL_assertion(false); return Descriptor(); }
@@ -113,7 +113,6 @@ public:
   static std::size_t number(const Descriptor&, std::false_type) { return std::size_t(-1); }
 
 private:
-  bool m_identity = false;
   std::size_t m_size = 0;
   std::vector<Descriptor> m_handles;
   Index_map m_index;

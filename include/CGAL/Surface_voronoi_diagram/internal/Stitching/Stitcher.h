@@ -40,7 +40,6 @@
 #include <limits>
 #include <map>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -663,15 +662,6 @@ void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_table& candi
             const Face_cuts& cuts, Partition& out, bool parallel = false)
 {
   Stitcher<TriangleMesh>(mesh, candidates, cuts, parallel).run(out);
-}
-
-/// The same from lists that may still grow (a packed copy is stitched).
-template <class TriangleMesh>
-void stitch(const Indexed_mesh<TriangleMesh>& mesh, const Candidate_lists& candidates,
-            const Face_cuts& cuts, Partition& out, bool parallel = false)
-{
-  Candidate_lists copy = candidates;
-  stitch(mesh, Candidate_table(std::move(copy)), cuts, out, parallel);
 }
 
 } // namespace internal
