@@ -2391,7 +2391,7 @@ TEST_CASE("program: coordinates near 1e308 and 1e-310 work, the outputs in the i
 }
 
 // The program's memory policy (huge pages or not) is not allowed to change a bit of its outputs.
-TEST_CASE("program: SVD_HUGE_PAGES=0 leaves out the huge-page advice and changes no output", "[program]")
+TEST_CASE("program: the huge-page advice, given (SVD_HUGE_PAGES=1), left out (=0) or chosen by the machine, changes no output", "[program]")
 {
   Temp_dir dir;
   const Soup sphere = octahedral_sphere(5);   // 4098 vertices
@@ -2403,13 +2403,18 @@ TEST_CASE("program: SVD_HUGE_PAGES=0 leaves out the huge-page advice and changes
       return std::vector<std::string>{ (dir / "sphere.off").string(), "--random", "300", "--seed", "3", "--metric", metric,
                                        "--output", (dir / (name + ".ply")).string(), "--sites-out", (dir / (name + ".txt")).string() };
     };
-    const Run advised = run_program(dir, args("advised"));
+    const Run chosen = run_program(dir, args("chosen"));
     const Run plain = run_program(dir, args("plain"), "SVD_HUGE_PAGES=0");
-    check_success(advised);
+    const Run forced = run_program(dir, args("forced"), "SVD_HUGE_PAGES=1");
+    check_success(chosen);
     check_success(plain);
-    CHECK(plain.err == advised.err);
-    CHECK(read_bytes(dir / "plain.ply") == read_bytes(dir / "advised.ply"));
-    CHECK(read_bytes(dir / "plain.txt") == read_bytes(dir / "advised.txt"));
+    check_success(forced);
+    CHECK(plain.err == chosen.err);
+    CHECK(forced.err == chosen.err);
+    CHECK(read_bytes(dir / "plain.ply") == read_bytes(dir / "chosen.ply"));
+    CHECK(read_bytes(dir / "plain.txt") == read_bytes(dir / "chosen.txt"));
+    CHECK(read_bytes(dir / "forced.ply") == read_bytes(dir / "chosen.ply"));
+    CHECK(read_bytes(dir / "forced.txt") == read_bytes(dir / "chosen.txt"));
     CHECK(!read_bytes(dir / "plain.ply").empty());
   }
 }

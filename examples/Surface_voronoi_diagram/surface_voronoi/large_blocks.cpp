@@ -36,11 +36,16 @@
 //   Steps of 8 MB took the faults to 4.1k for the same compute, but raised the biharmonic
 //   peak at igea-537k by 11 MiB (huge pages half used at the heap's top), to 805 MiB; with
 //   4 MB steps it is 796 MiB (794 without the advice).
-// - The advice is left out when the environment sets `SVD_HUGE_PAGES=0`: on a second 2-core
-//   virtual machine huge pages made the same diagram slower, not faster (igea-537k, 10k sites,
-//   one thread, 7 interleaved runs: compute 2.00 s with the advice, 1.54 s without, system time
-//   1.65 against 0.65 s), the kernel zeroing each 2 MB page at its first touch taking longer
-//   there than the 512 first touches it saves.
+// - The advice is left out where the kernel gives freed 2 MB blocks back to the hypervisor
+//   (free page reporting, from a virtio balloon device, at an order of 9 or less): there every
+//   huge page the process gets was handed back and is backed afresh by the host at its first
+//   touch, 512 host faults under one guest fault. On such a machine (Firecracker, reporting at
+//   order 9) a first touch cost 2.8-3.6 s per GiB with huge pages against 0.41 s with 4 KB
+//   pages, and igea-537k's Euclidean diagram took 4.14 s with the advice, 3.55 s without (5
+//   interleaved runs, system time 1.14 against 0.54 s; two machines of that kind so far). On
+//   the machine where the advice halved the run, first touches of 4 KB pages cost 3 s per GiB.
+//   `SVD_HUGE_PAGES=1` gives the advice and `SVD_HUGE_PAGES=0` leaves it out whatever the
+//   machine.
 
 #include <cstddef>
 #include <cstdint>
@@ -59,6 +64,8 @@
 
 #ifndef SVD_PROGRAM_KEEP_DEFAULT_ALLOCATION
 #include <atomic>
+#include <fstream>
+#include <string>
 #include <malloc.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -121,6 +128,27 @@ void* advise(void* p, std::size_t n)
   return p;
 }
 
+// Whether freed 2 MB blocks go back to the hypervisor: a virtio balloon device (id 5) that
+// offers free page reporting (feature bit 5), and a reporting order of at most 9 (2 MB).
+bool host_takes_back_huge_pages()
+{
+  std::ifstream order_file("/sys/module/page_reporting/parameters/page_reporting_order");
+  int order = 0;
+  if(!(order_file >> order) || order > 9) return false;
+  for(int k = 0; k < 64; ++k)
+  {
+    const std::string device = "/sys/bus/virtio/devices/virtio" + std::to_string(k);
+    std::ifstream id_file(device + "/device");
+    if(!id_file) continue;
+    std::string id, features;
+    id_file >> id;
+    std::ifstream features_file(device + "/features");
+    features_file >> features;   // one character per feature bit, bit 0 first
+    if(id == "0x0005" && features.size() > 5 && features[5] == '1') return true;
+  }
+  return false;
+}
+
 } // namespace
 #endif
 
@@ -133,6 +161,7 @@ void set_large_block_policy()
   mallopt(M_TOP_PAD, static_cast<int>(heap_step));
   const char* huge_pages = std::getenv("SVD_HUGE_PAGES");
   if(huge_pages != nullptr && std::strcmp(huge_pages, "0") == 0) return;
+  if(!(huge_pages != nullptr && std::strcmp(huge_pages, "1") == 0) && host_takes_back_huge_pages()) return;
   advised_heap_end.store(reinterpret_cast<std::uintptr_t>(sbrk(0)), std::memory_order_relaxed);   // from here up
   advise_huge_pages.store(true, std::memory_order_relaxed);
 #endif

@@ -15,8 +15,9 @@
 namespace svd_program {
 
 /// Blocks of 4 MB and more mapped from the system, returned to it when freed, and backed by
-/// transparent huge pages unless the environment sets `SVD_HUGE_PAGES=0` (Linux with glibc;
-/// elsewhere nothing changes). Call it first in `main()`.
+/// transparent huge pages unless the host takes freed huge pages back (free page reporting) or
+/// the environment sets `SVD_HUGE_PAGES=0` (`SVD_HUGE_PAGES=1` gives them in any case); Linux
+/// with glibc, elsewhere nothing changes. Call it first in `main()`.
 void set_large_block_policy();
 
 } // namespace svd_program
