@@ -892,10 +892,33 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
       REQUIRE(back[f].size() == original[f].size());
       for(std::size_t k = 0; k < back[f].size(); ++k) CHECK(same(back[f][k], original[f][k]));
     }
+    // copies (the table's storage is raw) hold the same candidates, apart from the original
+    SVI::Candidate_table assigned;
+    assigned = table;
+    const SVI::Candidate_table copied(assigned);
+    SVI::Candidate_table moved(std::move(assigned));
+    for(const SVI::Candidate_table* t : std::initializer_list<const SVI::Candidate_table*>{ &copied, &moved })
+    {
+      REQUIRE(t->size() == table.size());
+      CHECK(t->number_of_candidates() == total);
+      for(std::size_t f = 0; f < original.size(); ++f)
+      {
+        REQUIRE((*t)[f].size() == original[f].size());
+        if(!original[f].empty()) CHECK((*t)[f].begin() != table[f].begin());
+        for(std::size_t k = 0; k < original[f].size(); ++k) CHECK(same((*t)[f][k], original[f][k]));
+      }
+    }
+    moved.clear();
+    CHECK(moved.empty());
+    CHECK(moved.number_of_candidates() == 0);
+    CHECK(copied.number_of_candidates() == total);
   }
   const SVI::Candidate_table none;
   CHECK(none.size() == 0);
   CHECK(none.empty());
+  const SVI::Candidate_table none_copied(none);
+  CHECK(none_copied.empty());
+  CHECK(none_copied.number_of_candidates() == 0);
 }
 
 TEST_CASE("propagation: the four-ary heap pops what std::priority_queue pops", "[stitcher]")

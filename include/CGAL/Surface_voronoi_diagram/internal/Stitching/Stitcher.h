@@ -503,6 +503,15 @@ private:
       std::vector<std::pair<Point_d, std::size_t> > used;
       for(std::size_t f = begin; f < end; ++f)
       {
+        // a face that is one piece through its three corners alone (most faces) has nothing
+        // to weld: its corners are distinct points, since the mesh has no face without area
+        if(out.face_begin[f + 1] == out.face_begin[f] + 1)
+        {
+          const Partition::Vertex_cycle& ids = out.pieces[out.face_begin[f]].vertices;
+          if(ids.size() == 3 && out.vertices[ids[0]].kind == Partition::AT_CORNER && out.vertices[ids[1]].kind == Partition::AT_CORNER
+             && out.vertices[ids[2]].kind == Partition::AT_CORNER)
+            continue;
+        }
         used.clear();
         for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
           for(std::size_t v : out.pieces[p].vertices) used.emplace_back(out.vertices[v].point, v);
