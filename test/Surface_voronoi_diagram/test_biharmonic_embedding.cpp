@@ -13,6 +13,8 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <cstring>
+#include <random>
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
 namespace svd_test_biharmonic_embedding {
@@ -41,7 +43,77 @@ void make_bent_torus(Mesh& m, std::size_t nu, std::size_t nv)
   }
 }
 
+// The assembly by triplets (four per corner, in face order) that the direct one replaces.
+void triplet_matrices(const std::vector<SV::internal::Point_d>& points, const std::vector<std::array<std::uint32_t, 3> >& triangles,
+                      Eigen::SparseMatrix<double>& L, Eigen::SparseMatrix<double>& M)
+{
+  const Eigen::Index n = Eigen::Index(points.size());
+  std::vector<Eigen::Triplet<double> > lt;
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
+  for(const auto& t : triangles)
+  {
+    const SV::internal::Point_d* p[3] = { &points[t[0]], &points[t[1]], &points[t[2]] };
+    const double twice_area = std::sqrt(CGAL::cross_product(*p[1] - *p[0], *p[2] - *p[0]).squared_length());
+    for(int k = 0; k < 3; ++k)
+    {
+      const double half_cot = 0.5 * ((*p[(k + 1) % 3] - *p[k]) * (*p[(k + 2) % 3] - *p[k])) / twice_area;
+      const Eigen::Index i = Eigen::Index(t[(k + 1) % 3]), j = Eigen::Index(t[(k + 2) % 3]);
+      lt.emplace_back(i, j, -half_cot);
+      lt.emplace_back(j, i, -half_cot);
+      lt.emplace_back(i, i, half_cot);
+      lt.emplace_back(j, j, half_cot);
+    }
+    for(int k = 0; k < 3; ++k) mass[Eigen::Index(t[k])] += twice_area / 6.0;
+  }
+  L.resize(n, n);
+  L.setFromTriplets(lt.begin(), lt.end());
+  std::vector<Eigen::Triplet<double> > mt;
+  for(Eigen::Index i = 0; i < n; ++i) mt.emplace_back(i, i, mass[i]);
+  M.resize(n, n);
+  M.setFromTriplets(mt.begin(), mt.end());
+}
+
+bool same_bits(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b)
+{
+  if(a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros() || !a.isCompressed() || !b.isCompressed())
+    return false;
+  return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr())
+         && std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr())
+         && std::memcmp(a.valuePtr(), b.valuePtr(), sizeof(double) * std::size_t(a.nonZeros())) == 0;
+}
+
 } // namespace
+
+TEST_CASE("embedding: the direct assembly of L and M is the triplet assembly's bits", "[embedding]")
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for(int shape = 0; shape < 3; ++shape)
+  {
+    Mesh m;
+    if(shape == 0) GEN::make_icosphere(m, 3, 1.0);
+    else if(shape == 1) make_bent_torus(m, 40, 16);
+    else GEN::make_planar_grid(m, 30, 20);   // with a border, and right angles: zero cotangents
+    if(shape > 0)
+      for(auto v : vertices(m))
+        if(rng() % 2 == 0)
+        {
+          const Point p = m.point(v);
+          m.point(v) = Point(p.x() + 0.1 * jitter(rng), p.y() + 0.1 * jitter(rng), p.z() + 0.01 * jitter(rng));
+        }
+    SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
+    std::vector<SV::internal::Point_d> points = im.points;
+    std::vector<std::array<std::uint32_t, 3> > triangles(im.triangles.begin(), im.triangles.end());
+    if(shape == 2) points.push_back(SV::internal::Point_d(5, 5, 5));   // in no triangle: an empty column
+    Eigen::SparseMatrix<double> L, M, L_ref, M_ref;
+    SV::internal::assemble_cotangent_laplacian(points, triangles, L, M);
+    triplet_matrices(points, triangles, L_ref, M_ref);
+    INFO("shape " << shape);
+    CHECK(same_bits(L, L_ref));
+    CHECK(same_bits(M, M_ref));
+    CHECK(L.nonZeros() > Eigen::Index(points.size()));
+  }
+}
 
 TEST_CASE("embedding: eigenvectors are M-orthonormal and solve L phi = lambda M phi", "[embedding]")
 {
