@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -53,40 +54,42 @@ void assemble_cotangent_laplacian(const std::vector<Point_d>& points,
 {
   typedef Eigen::SparseMatrix<double>::StorageIndex Storage;
   const std::size_t n = points.size();
-  CGAL_precondition_msg(n < std::size_t((std::numeric_limits<Storage>::max)()), "too many vertices for the matrix's indices");
+  const std::size_t largest_index = std::size_t((std::numeric_limits<Storage>::max)());
+  CGAL_precondition_msg(n < largest_index, "too many vertices for the matrix's indices");
 
   // the pattern: column j holds j and the vertices sharing a triangle with it (both
   // directions of each edge, once), sorted; a vertex in no triangle has an empty column
-  std::vector<Storage> begin(n + 1, 0);
+  std::vector<std::size_t> begin(n + 1, 0);
   for(const std::array<Index, 3>& t : triangles)
     for(int k = 0; k < 3; ++k) begin[std::size_t(t[k]) + 1] += 2;
   for(std::size_t j = 0; j < n; ++j) begin[j + 1] += begin[j] + (begin[j + 1] > 0 ? 1 : 0);   // and the diagonal
-  std::vector<Storage> rows(static_cast<std::size_t>(begin[n]));
+  std::vector<Storage> rows(begin[n]);
   {
-    std::vector<Storage> next(begin.begin(), begin.end() - 1);
+    std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
     for(std::size_t j = 0; j < n; ++j)
-      if(begin[j + 1] > begin[j]) rows[static_cast<std::size_t>(next[j]++)] = Storage(j);
+      if(begin[j + 1] > begin[j]) rows[next[j]++] = Storage(j);
     for(const std::array<Index, 3>& t : triangles)
       for(int k = 0; k < 3; ++k)
       {
         const std::size_t j = std::size_t(t[k]);
-        rows[static_cast<std::size_t>(next[j]++)] = Storage(t[(k + 1) % 3]);
-        rows[static_cast<std::size_t>(next[j]++)] = Storage(t[(k + 2) % 3]);
+        rows[next[j]++] = Storage(t[(k + 1) % 3]);
+        rows[next[j]++] = Storage(t[(k + 2) % 3]);
       }
   }
   std::vector<Storage> outer(n + 1, 0);
   std::size_t nnz = 0;
   for(std::size_t j = 0; j < n; ++j)
   {
-    const auto first = rows.begin() + begin[j], last = rows.begin() + begin[j + 1];
+    const auto first = rows.begin() + std::ptrdiff_t(begin[j]), last = rows.begin() + std::ptrdiff_t(begin[j + 1]);
     std::sort(first, last);
     const auto end = std::unique(first, last);
+    CGAL_precondition_msg(nnz + std::size_t(end - first) < largest_index, "too many non-zeros for the matrix's indices");
     outer[j] = Storage(nnz);
     for(auto it = first; it != end; ++it) rows[nnz++] = *it;   // compacted in place, forwards
   }
   outer[n] = Storage(nnz);
   rows.resize(nnz);
-  std::vector<Storage>().swap(begin);
+  std::vector<std::size_t>().swap(begin);
 
   L.resize(Eigen::Index(n), Eigen::Index(n));
   L.resizeNonZeros(Eigen::Index(nnz));
