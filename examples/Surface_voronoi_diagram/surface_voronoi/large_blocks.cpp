@@ -64,6 +64,7 @@
 
 #ifndef SVD_PROGRAM_KEEP_DEFAULT_ALLOCATION
 #include <atomic>
+#include <dirent.h>
 #include <fstream>
 #include <string>
 #include <malloc.h>
@@ -135,18 +136,19 @@ bool host_takes_back_huge_pages()
   std::ifstream order_file("/sys/module/page_reporting/parameters/page_reporting_order");
   int order = 0;
   if(!(order_file >> order) || order > 9) return false;
-  for(int k = 0; k < 64; ++k)
+  DIR* devices = opendir("/sys/bus/virtio/devices");
+  if(devices == nullptr) return false;
+  bool reporting = false;
+  while(const dirent* entry = readdir(devices))
   {
-    const std::string device = "/sys/bus/virtio/devices/virtio" + std::to_string(k);
-    std::ifstream id_file(device + "/device");
-    if(!id_file) continue;
+    const std::string device = std::string("/sys/bus/virtio/devices/") + entry->d_name;
     std::string id, features;
-    id_file >> id;
-    std::ifstream features_file(device + "/features");
-    features_file >> features;   // one character per feature bit, bit 0 first
-    if(id == "0x0005" && features.size() > 5 && features[5] == '1') return true;
+    std::ifstream(device + "/device") >> id;
+    std::ifstream(device + "/features") >> features;   // one character per feature bit, bit 0 first
+    if(id == "0x0005" && features.size() > 5 && features[5] == '1') reporting = true;
   }
-  return false;
+  closedir(devices);
+  return reporting;
 }
 
 } // namespace

@@ -26,9 +26,6 @@
 #include <CGAL/assertions.h>
 
 #include <cstdint>
-#include <memory>
-#include <new>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -37,8 +34,6 @@ namespace internal {
 
 class Candidate_table
 {
-  static_assert(std::is_trivially_copyable<Candidate>::value, "candidates are copied into raw storage");
-
 public:
   /// the candidates of one face
   class List
@@ -71,40 +66,24 @@ public:
       CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
       m_first[f + 1] = static_cast<std::uint32_t>(total);
     }
-    // not value-initialized: the copies below are the first writes, made by the threads that
-    // copy (an initialization first was one more sequential pass over 45 MB at 537k vertices)
-    m_items.reset(static_cast<Candidate*>(::operator new(total * sizeof(Candidate))));
-    m_size = total;
+    m_items.resize(total);
     parallel_for_each_index(nf, parallel, [&](std::size_t f) {
-      std::uninitialized_copy(lists[f].begin(), lists[f].end(), m_items.get() + m_first[f]);
+      std::copy(lists[f].begin(), lists[f].end(), m_items.begin() + m_first[f]);
       lists[f] = Candidate_list();   // frees a list on the heap
     });
     Candidate_lists().swap(lists);
   }
 
-  Candidate_table(const Candidate_table& other) : m_first(other.m_first) { copy_items(other); }
-  Candidate_table(Candidate_table&&) = default;
-  Candidate_table& operator=(const Candidate_table& other)
-  {
-    if(this != &other)
-    {
-      m_first = other.m_first;
-      copy_items(other);
-    }
-    return *this;
-  }
-  Candidate_table& operator=(Candidate_table&&) = default;
-
   /// the number of faces
   std::size_t size() const { return m_first.empty() ? 0 : m_first.size() - 1; }
   bool empty() const { return size() == 0; }
   /// the number of candidates of all faces
-  std::size_t number_of_candidates() const { return m_size; }
+  std::size_t number_of_candidates() const { return m_items.size(); }
 
   List operator[](std::size_t f) const
   {
     CGAL_assertion(f < size());
-    return List(m_items.get() + m_first[f], m_items.get() + m_first[f + 1]);
+    return List(m_items.data() + m_first[f], m_items.data() + m_first[f + 1]);
   }
 
   /// the lists again, for a propagation to grow them
@@ -122,26 +101,12 @@ public:
   void clear()
   {
     std::vector<std::uint32_t>().swap(m_first);
-    m_items.reset();
-    m_size = 0;
+    std::vector<Candidate>().swap(m_items);
   }
 
 private:
   std::vector<std::uint32_t> m_first;   // face f's candidates: m_items[m_first[f]] .. m_items[m_first[f + 1]]
-  // Candidates are trivially copyable: raw storage, constructed by copying
-  struct Release
-  {
-    void operator()(Candidate* p) const { ::operator delete(p); }
-  };
-  std::unique_ptr<Candidate, Release> m_items;
-  std::size_t m_size = 0;
-
-  void copy_items(const Candidate_table& other)
-  {
-    m_items.reset(other.m_size == 0 ? nullptr : static_cast<Candidate*>(::operator new(other.m_size * sizeof(Candidate))));
-    m_size = other.m_size;
-    if(m_size > 0) std::uninitialized_copy(other.m_items.get(), other.m_items.get() + m_size, m_items.get());
-  }
+  std::vector<Candidate> m_items;
 };
 
 } // namespace internal

@@ -76,7 +76,8 @@ void assemble_cotangent_laplacian(const std::vector<Point_d>& points,
         rows[next[j]++] = Storage(t[(k + 2) % 3]);
       }
   }
-  std::vector<Storage> outer(n + 1, 0);
+  L.resize(Eigen::Index(n), Eigen::Index(n));   // compressed, its column offsets written below
+  Storage* outer = L.outerIndexPtr();
   std::size_t nnz = 0;
   for(std::size_t j = 0; j < n; ++j)
   {
@@ -91,9 +92,7 @@ void assemble_cotangent_laplacian(const std::vector<Point_d>& points,
   rows.resize(nnz);
   std::vector<std::size_t>().swap(begin);
 
-  L.resize(Eigen::Index(n), Eigen::Index(n));
   L.resizeNonZeros(Eigen::Index(nnz));
-  std::copy(outer.begin(), outer.end(), L.outerIndexPtr());
   std::copy(rows.begin(), rows.end(), L.innerIndexPtr());
   double* value = L.valuePtr();
   std::vector<std::uint8_t> taken(nnz, 0);
