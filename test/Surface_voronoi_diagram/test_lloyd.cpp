@@ -205,4 +205,76 @@ TEST_CASE("lloyd: the sites before first_moving_site stay where they are, the ot
   CHECK(r.energies.back() < r.energies.front());
 }
 
+TEST_CASE("lloyd: a centroid goes to the nearest point of the faces its cell reaches", "[lloyd]")
+{
+  // oracle: the nearest point by brute force over the faces where the site is a candidate
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.4, 48, 20);
+  Euclidean e(m);
+  const auto start = area_uniform_locations(m, 60, 11);
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> before(m, e, start);
+  const auto r = SV::lloyd_relaxation(m, e, start, CGAL::parameters::number_of_iterations(1));
+  REQUIRE(r.kept_in_place == 0);
+  const auto& data = SV::internal::Diagram_access::data(before);
+  std::vector<std::vector<Mesh::Face_index> > faces_of(start.size());
+  for(std::size_t f = 0; f < data.candidates.size(); ++f)
+    for(const auto& x : data.candidates[f]) faces_of[x.site].push_back(data.mesh->face_handles[f]);
+  for(std::size_t i = 0; i < start.size(); ++i)
+  {
+    faces_of[i].push_back(start[i].first);
+    const Point c = before.cell_centroid(i);
+    double nearest = std::numeric_limits<double>::infinity();
+    for(Mesh::Face_index f : faces_of[i])
+    {
+      const auto h = m.halfedge(f);
+      const K::Triangle_3 t(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+      nearest = (std::min)(nearest, CGAL::squared_distance(c, t));
+    }
+    const double ours = CGAL::squared_distance(c, point_of(r.sites[i], m));
+    CHECK(std::find(faces_of[i].begin(), faces_of[i].end(), r.sites[i].first) != faces_of[i].end());
+    CHECK(ours <= nearest * (1 + 1e-9) + 1e-24);
+    CHECK(ours >= nearest * (1 - 1e-9) - 1e-24);
+    CHECK(ours <= CGAL::squared_distance(c, point_of(start[i], m)) * (1 + 1e-9) + 1e-24);
+  }
+}
+
+TEST_CASE("lloyd: a site stays on its side of a thin wall", "[lloyd]")
+{
+  // On a pot whose wall is thinner than the cells are curved, the centroid of a cell on the
+  // outer wall lies inside the wall, nearer the inner side: the nearest point of the whole
+  // surface would move the site through the wall (about half of them here).
+  Mesh m;
+  GEN::Pot_options po;
+  po.target_vertices = 6000;
+  po.thickness = 0.001;
+  GEN::make_thin_pot(m, po);
+  const double R = 1. / 3., H = 1. / 3., t = po.thickness;   // the pot's proportions at size 1
+  Euclidean e(m);
+  const auto start = area_uniform_locations(m, 100, 2);
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> before(m, e, start);
+  const auto r = SV::lloyd_relaxation(m, e, start, CGAL::parameters::number_of_iterations(1));
+  // 1 outer wall, -1 inner
+  auto side = [&](const Point& p) { return std::sqrt(p.x() * p.x() + p.y() * p.y()) > R - t / 2 ? 1 : -1; };
+  // the sites whose cell lies on one side of the vertical wall (not over the rim or the bottom)
+  const auto& data = SV::internal::Diagram_access::data(before);
+  std::vector<int> cell_side(start.size(), 2);   // 2: no face yet, 0: both sides or off the wall
+  for(std::size_t f = 0; f < data.candidates.size(); ++f)
+  {
+    const auto& a = data.mesh->corner(f, 0);
+    const auto& b = data.mesh->corner(f, 1);
+    const auto& c = data.mesh->corner(f, 2);
+    const bool on_wall = (std::min)({ a.z(), b.z(), c.z() }) > 0.1 * H && (std::max)({ a.z(), b.z(), c.z() }) < 0.9 * H;
+    const int s = on_wall ? side(Point((a.x() + b.x() + c.x()) / 3, (a.y() + b.y() + c.y()) / 3, 0)) : 0;
+    for(const auto& x : data.candidates[f]) cell_side[x.site] = (cell_side[x.site] == 2 || cell_side[x.site] == s) ? s : 0;
+  }
+  std::size_t on_one_side = 0;
+  for(std::size_t i = 0; i < start.size(); ++i)
+  {
+    if(cell_side[i] == 0 || cell_side[i] == 2) continue;
+    ++on_one_side;
+    CHECK(side(point_of(r.sites[i], m)) == cell_side[i]);
+  }
+  CHECK(on_one_side >= 20);
+}
+
 } // namespace svd_test_lloyd

@@ -22,11 +22,9 @@
 #include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Nearest_point_of_cell.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -120,14 +118,18 @@ std::shared_ptr<const std::vector<double> > centroid_density(const Indexed_mesh<
 
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// Lloyd relaxation: from `sites` (face locations of `tm`), each iteration moves every site to
-/// the area-weighted centroid of its cell, projected to the nearest surface point, and builds
-/// the diagram again. For the Euclidean embedding with `GLOBAL_NEAREST` candidates the energy
-/// cannot increase (both steps minimize it); for the other metrics it is reported. An empty
+/// the area-weighted centroid of its cell, projected to the nearest point of the faces its cell
+/// reaches (the faces where it is a candidate, and its own), and builds the diagram again.
+/// Projecting onto the cell's own faces rather than onto the whole surface keeps a site on its
+/// side of a thin wall, where the centroid of a cell on one side of a thin plate can be nearer
+/// the other side. For the Euclidean embedding with `GLOBAL_NEAREST` candidates the energy
+/// cannot increase (the projection is at least as near the centroid as the site was, and the
+/// new cells minimize the energy for the sites); for the other metrics it is reported. An empty
 /// cell keeps its site; a centroid projecting onto another site's point keeps its site. The
 /// projection uses the geometric traits (named parameter `geom_traits`, by default the
 /// kernel of the vertex point map), since it constructs the locations returned; the search
-/// for the nearest point starts from the site's own face, and where several faces share the
-/// nearest point (on their common edge or vertex) the face found first from there is kept.
+/// starts from the site's own face and goes through the cell's faces in their order, and
+/// where faces share the nearest point (on their common edge or vertex) the first keeps it.
 /// The metric is built once by the caller: no embedding is computed again per iteration, and
 /// the diagrams of the iterations compute the cells only (no neighbours, no vertex owners),
 /// measuring their areas, centroids and energy on the per-face cuts without stitching them
@@ -199,8 +201,6 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
   typedef typename GetVertexPointMap<TriangleMesh, CGAL_NP_CLASS>::const_type VPM;
   typedef typename GetGeomTraits<TriangleMesh, CGAL_NP_CLASS>::type Geom_traits;
-  typedef CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VPM> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Geom_traits, Primitive> > Tree;
   typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits, ConcurrencyTag> Diagram;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -212,11 +212,11 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const std::function<bool(double)> callback = internal::callback_of(np);
   const std::size_t first_moving = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::first_moving_site), std::size_t(0));
 
-  Tree tree;
-  CGAL::Polygon_mesh_processing::build_AABB_tree(tm, tree, CGAL::parameters::vertex_point_map(vpm));
   // indexed once for all the diagrams (and the checks for coincident sites)
   const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
+  internal::Nearest_point_of_cell<TriangleMesh, VPM, Geom_traits> projection(mesh, tm, vpm,
+      choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
   const std::shared_ptr<const std::vector<double> > density = internal::centroid_density(mesh, np);
 
   Lloyd_result<TriangleMesh> result;
@@ -241,6 +241,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     // are the locations the caller receives
     std::vector<typename Diagram::Point_3> moved;
     const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
+    const auto& data = internal::Diagram_access::data(diagram);
+    projection.set_cells(data.candidates, sites.size());
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
       if(i < first_moving)
@@ -248,8 +250,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
         moved.push_back(CGAL::Polygon_mesh_processing::construct_point(sites[i], tm, locate_np));
         continue;
       }
-      const Location l = internal::locate_with_AABB_tree(centroids[i], sites[i].first, tree, tm, vpm,
-                                                         choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
+      const Location l = projection.locate(centroids[i], i, data.sites[i].face);
       moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));
       sites[i] = l;
     }
