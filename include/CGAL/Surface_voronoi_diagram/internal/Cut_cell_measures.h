@@ -89,11 +89,16 @@ public:
       const Face_cuts::Cut cut = m_cuts[f];
       if(cut.whole_face)
       {
-        const std::array<Polygon_vertex, 3> triangle = {{
-            Polygon_vertex{ m_mesh.corner(f, 0), {{ 1., 0., 0. }} },
-            Polygon_vertex{ m_mesh.corner(f, 1), {{ 0., 1., 0. }} },
-            Polygon_vertex{ m_mesh.corner(f, 2), {{ 0., 0., 1. }} } }};
-        add(out, f, 0, triangle.data(), triangle.size());
+        if(m_density)
+        {
+          const std::array<Polygon_vertex, 3> triangle = {{
+              Polygon_vertex{ m_mesh.corner(f, 0), {{ 1., 0., 0. }} },
+              Polygon_vertex{ m_mesh.corner(f, 1), {{ 0., 1., 0. }} },
+              Polygon_vertex{ m_mesh.corner(f, 2), {{ 0., 0., 1. }} } }};
+          add(out, f, 0, triangle.data(), triangle.size());
+        }
+        else
+          add_whole_face(out, f, list[0]);
         continue;
       }
       for(const Face_cuts::Piece piece : cut.pieces)
@@ -217,6 +222,41 @@ private:
       else
         out.energy += t / 3. * (field.at(o.b) + field.at(q.b) + field.at(r.b));
     }
+  }
+
+  // A face one candidate owns, without a density (most faces): the same area and moment as
+  // add() takes, and the integral of the squared distance in closed form, (t / 12)
+  // (|u0 + u1 + u2|^2 + |u0|^2 + |u1|^2 + |u2|^2) for the corners' offsets u from the site in
+  // an embedding (what the edge-midpoint rule sums to), t/3 (v0 + v1 + v2) otherwise.
+  void add_whole_face(Cell_measures& out, std::size_t f, const Candidate& x) const
+  {
+    const Point_d& o = m_mesh.corner(f, 0);
+    const Point_d& q = m_mesh.corner(f, 1);
+    const Point_d& r = m_mesh.corner(f, 2);
+    const double t = triangle_area(o, q, r);
+    out.area[x.site] += t;
+    std::array<double, 3>& moment = out.moment[x.site];
+    for(int j = 0; j < 3; ++j) moment[j] += t * (o[j] + q[j] + r[j]) / 3.;
+    if(!(t > 0)) return;
+    if(!m_embedding)
+    {
+      const double w = m_sites[x.site].weight;
+      out.energy += t / 3. * ((x.value[0] + w) + (x.value[1] + w) + (x.value[2] + w));
+      return;
+    }
+    const std::size_t d = m_embedding->dimension();
+    const double* s = m_embedding->site_coordinates(x.site);
+    const double* e0 = m_embedding->vertex_coordinates(m_mesh.triangles[f][0]);
+    const double* e1 = m_embedding->vertex_coordinates(m_mesh.triangles[f][1]);
+    const double* e2 = m_embedding->vertex_coordinates(m_mesh.triangles[f][2]);
+    double sum = 0, squares = 0;
+    for(std::size_t c = 0; c < d; ++c)
+    {
+      const double u0 = e0[c] - s[c], u1 = e1[c] - s[c], u2 = e2[c] - s[c];
+      sum += (u0 + u1 + u2) * (u0 + u1 + u2);
+      squares += u0 * u0 + u1 * u1 + u2 * u2;
+    }
+    out.energy += t / 12. * (sum + squares);
   }
 
   double density_at(std::size_t f, const Barycentric& b) const

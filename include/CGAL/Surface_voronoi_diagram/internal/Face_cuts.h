@@ -192,6 +192,7 @@ private:
     std::vector<Piece_record> pieces;
     std::vector<Symbolic_vertex> vertices;
     std::vector<Piece_edge_support> supports;
+    Face_cut scratch;   // one face's cut, its storage reused face after face
 
     void clear()
     {
@@ -222,11 +223,14 @@ private:
   static void cut_face(const Candidate_lists& candidates, std::size_t f, Buffer& buffer)
   {
     const Candidate_list& list = candidates[f];
-    Face_cut c;
+    Face_cut& c = buffer.scratch;
+    c.pieces.clear();
+    c.degenerate = false;
+    c.whole_face = false;
     if(list.size() == 1)
       c.whole_face = true;   // the only candidate owns the whole triangle: no piece stored
     else if(!list.empty())
-      c = Face_cutter(list).cut();
+      Face_cutter(list).cut(c);
     buffer.add(f, c);
   }
 

@@ -111,6 +111,16 @@ public:
   Face_cut cut() const
   {
     Face_cut result;
+    cut(result);
+    return result;
+  }
+
+  /// the same into `result`, whose storage is reused (one cut after another allocates nothing)
+  void cut(Face_cut& result) const
+  {
+    result.pieces.clear();
+    result.degenerate = false;
+    result.whole_face = false;
     const std::uint32_t n = static_cast<std::uint32_t>(m_candidates.size());
     if(n == 1)
     {
@@ -121,11 +131,20 @@ public:
       piece.vertices = { Symbolic_vertex{ Symbolic_vertex::CORNER, 0, 0, 0 }, Symbolic_vertex{ Symbolic_vertex::CORNER, 1, 0, 0 },
                          Symbolic_vertex{ Symbolic_vertex::CORNER, 2, 0, 0 } };
       piece.supports = { Piece_edge_support{ true, 0, 0 }, Piece_edge_support{ true, 1, 0 }, Piece_edge_support{ true, 2, 0 } };
-      return result;
+      return;
     }
     // Built in place: a piece holds its vertices inline, so moving one copies them. No
     // reallocation moves them either, since there is at most one piece per candidate.
     result.pieces.reserve(n);
+    const std::size_t most_vertices = std::size_t(n) + 3;
+    if(m_out_vertices.size() < most_vertices)
+    {
+      m_signs.resize(most_vertices);
+      m_out_vertices.resize(most_vertices);
+      m_origin.resize(most_vertices);
+      m_crossing.resize(most_vertices);
+      m_out_supports.resize(most_vertices);
+    }
     for(std::uint32_t i = 0; i < n; ++i)
     {
       result.pieces.resize(result.pieces.size() + 1);
@@ -156,71 +175,76 @@ public:
       if(empty)
         result.pieces.pop_back();
     }
-    return result;
   }
 
 private:
   // Clips the piece of candidate i by {h_il <= 0}; returns false if nothing of positive
-  // area remains.
+  // area remains. Works in the cutter's scratch arrays, sized by cut() for the largest piece.
   bool clip(Symbolic_piece& piece, std::uint32_t i, std::uint32_t l, bool& degenerate) const
   {
     const std::size_t n = piece.vertices.size();
-    m_signs.resize(n);
+    CGAL_assertion(n + 1 <= m_out_vertices.size());
+    int* signs = m_signs.data();
     bool any_positive = false, any_negative = false;
     for(std::size_t k = 0; k < n; ++k)
     {
-      m_signs[k] = sign_at(piece.vertices[k], i, l);
-      any_positive |= (m_signs[k] > 0);
-      any_negative |= (m_signs[k] < 0);
-      if(m_signs[k] == 0) degenerate = true;
+      signs[k] = sign_at(piece.vertices[k], i, l);
+      any_positive |= (signs[k] > 0);
+      any_negative |= (signs[k] < 0);
+      if(signs[k] == 0) degenerate = true;
     }
     if(!any_positive)
       return true;
     if(!any_negative)
       return false;
 
-    // origin of each output vertex: (index, is_crossing) -> crossing on edge index
-    Symbolic_piece::Vertex_list out_vertices;
-    boost::container::small_vector<std::pair<std::size_t, bool>, 8> origin;
-    out_vertices.reserve(n + 1);
-    origin.reserve(n + 1);
+    // each output vertex, and where it comes from: input vertex k, or the crossing on input
+    // edge k (from vertex k to k + 1)
+    Symbolic_vertex* out = m_out_vertices.data();
+    std::uint32_t* origin = m_origin.data();
+    bool* crossing = m_crossing.data();
+    std::size_t m = 0;
     for(std::size_t k = 0; k < n; ++k)
     {
-      const std::size_t k1 = (k + 1) % n;
-      if(m_signs[k] <= 0)
+      const std::size_t k1 = (k + 1 == n) ? 0 : k + 1;
+      if(signs[k] <= 0)
       {
-        out_vertices.push_back(piece.vertices[k]);
-        origin.emplace_back(k, false);
+        out[m] = piece.vertices[k];
+        origin[m] = std::uint32_t(k);
+        crossing[m++] = false;
       }
-      if(m_signs[k] * m_signs[k1] < 0)
+      if(signs[k] * signs[k1] < 0)
       {
         const Piece_edge_support& s = piece.supports[k];
-        if(s.on_mesh_edge)
-          out_vertices.push_back(Symbolic_vertex{ Symbolic_vertex::EDGE, s.local, l, 0 });
-        else
-          out_vertices.push_back(Symbolic_vertex{ Symbolic_vertex::TRIPLE, 0, s.other, l });
-        origin.emplace_back(k, true);
+        out[m] = s.on_mesh_edge ? Symbolic_vertex{ Symbolic_vertex::EDGE, s.local, l, 0 }
+                                : Symbolic_vertex{ Symbolic_vertex::TRIPLE, 0, s.other, l };
+        origin[m] = std::uint32_t(k);
+        crossing[m++] = true;
       }
     }
-    const std::size_t m = out_vertices.size();
     if(m < 3)
       return false;
-    Symbolic_piece::Support_list out_supports(m);
+    Piece_edge_support* supports = m_out_supports.data();
     for(std::size_t k = 0; k < m; ++k)
     {
-      const std::pair<std::size_t, bool>& u = origin[k];
-      const std::pair<std::size_t, bool>& w = origin[(k + 1) % m];
-      // the output edge follows input edge u.first directly iff w is on that same edge
-      const bool direct = (w.second && w.first == u.first) || (!w.second && w.first == (u.first + 1) % n);
-      out_supports[k] = direct ? piece.supports[u.first] : Piece_edge_support{ false, 0, l };
+      const std::size_t w = (k + 1 == m) ? 0 : k + 1;
+      // the output edge follows input edge origin[k] directly iff w is on that same edge
+      const std::uint32_t next = (origin[k] + 1 == n) ? 0 : origin[k] + 1;
+      const bool direct = crossing[w] ? origin[w] == origin[k] : origin[w] == next;
+      supports[k] = direct ? piece.supports[origin[k]] : Piece_edge_support{ false, 0, l };
     }
-    piece.vertices.swap(out_vertices);
-    piece.supports.swap(out_supports);
+    piece.vertices.assign(out, out + m);
+    piece.supports.assign(supports, supports + m);
     return true;
   }
 
   const Candidate_list& m_candidates;
-  mutable boost::container::small_vector<int, 8> m_signs;
+  // scratch of clip(): a piece starts with 3 vertices and gains at most one per clip
+  mutable boost::container::small_vector<int, 16> m_signs;
+  mutable boost::container::small_vector<Symbolic_vertex, 16> m_out_vertices;
+  mutable boost::container::small_vector<std::uint32_t, 16> m_origin;
+  mutable boost::container::small_vector<bool, 16> m_crossing;
+  mutable boost::container::small_vector<Piece_edge_support, 16> m_out_supports;
 };
 
 } // namespace internal
