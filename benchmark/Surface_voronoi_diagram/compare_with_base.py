@@ -186,12 +186,25 @@ def main():
         section("Mesh-size sweep, 10k sites", rows, ["compute", "load", "wall", "peak_mib"])
         report.append("slope of compute against faces: new %.3f, old %.3f\n" % (slope(xs, ys_new), slope(xs, ys_old)))
     if "lloyd" in sections:
-        rows = []
+        rows, steps = [], []
         for metric in ["euclidean", "biharmonic", "geodesic"]:
-            rows.append(("boot, %s, 3000 sites, 1 Lloyd step" % metric,
-                         compare(a.program, a.base_program, paths["boot"],
-                                 ["--random", "3000", "--seed", "1", "--metric", metric, "--lloyd", "1"], repeat, a.work)))
+            by_count = {}
+            for count in (1, 11):
+                by_count[count] = compare(a.program, a.base_program, paths["boot"],
+                                          ["--random", "3000", "--seed", "1", "--metric", metric, "--lloyd", str(count)], repeat, a.work)
+                rows.append(("boot, %s, 3000 sites, %d Lloyd step%s" % (metric, count, "s" if count > 1 else ""), by_count[count]))
+            # one step: the difference of the two runs over the ten steps between them, which
+            # leaves out loading, the embedding and the final diagram (the old program may not
+            # print a lloyd time: its wall times then)
+            per_step = {}
+            for side in ("new", "old"):
+                key = "lloyd" if all("lloyd" in by_count[c][side] for c in by_count) else "wall"
+                per_step[side] = ((by_count[11][side][key] - by_count[1][side][key]) / 10, key)
+            steps.append("| %s | %.3f s (%s) | %.3f s (%s) | %s |" % (metric, per_step["new"][0], per_step["new"][1], per_step["old"][0],
+                                                                    per_step["old"][1], ratio(per_step["new"][0], per_step["old"][0])))
         section("Lloyd", rows, ["compute", "lloyd", "embedding", "wall", "peak_mib"])
+        report.append("One Lloyd step, boot, 3000 sites ((11 steps - 1 step) / 10, medians):\n\n"
+                      "| metric | new | old | ratio |\n|---|---|---|---|\n" + "\n".join(steps) + "\n")
     for metric, title, keys in (("biharmonic", "Biharmonic", ["embedding", "compute", "load", "wall", "peak_mib"]),
                                 ("geodesic", "Geodesic", ["compute", "load", "wall", "peak_mib"])):
         if metric not in sections:
