@@ -128,8 +128,9 @@ std::shared_ptr<const std::vector<double> > centroid_density(const Indexed_mesh<
 /// cell keeps its site; a centroid projecting onto another site's point keeps its site. The
 /// projection uses the geometric traits (named parameter `geom_traits`, by default the
 /// kernel of the vertex point map), since it constructs the locations returned; the search
-/// starts from the site's own face and goes through the cell's faces in their order, and
-/// where faces share the nearest point (on their common edge or vertex) the first keeps it.
+/// starts from the face whose bounding sphere is nearest the centroid and goes on through the
+/// cell's faces in their order, and where faces share the nearest point (on their common edge
+/// or vertex) the first searched keeps it.
 /// The metric is built once by the caller: no embedding is computed again per iteration, and
 /// the diagrams of the iterations compute the cells only (no neighbours, no vertex owners),
 /// measuring their areas, centroids and energy on the per-face cuts without stitching them

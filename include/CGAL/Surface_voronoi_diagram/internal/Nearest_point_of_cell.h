@@ -41,7 +41,6 @@ class Nearest_point_of_cell
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
   typedef typename GeomTraits::Point_3 Point_3;
-  typedef typename GeomTraits::FT FT;
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
 
   /// the faces' bounding spheres, computed once for all the iterations
