@@ -175,34 +175,6 @@ locate_in_face(const Point& p, typename boost::graph_traits<TriangleMesh>::face_
   return CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>(f, barycentric_coordinates(p0, p1, p2, to_point_d(p)));
 }
 
-/// `Polygon_mesh_processing::locate_with_AABB_tree()` made safe on needles: the face nearest
-/// to `p` by `tree`, and `p`'s location in it by `locate_in_face()` above.
-template <class Point, class Tree, class TriangleMesh, class VertexPointMap, class GeomTraits>
-CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
-locate_with_AABB_tree(const Point& p, const Tree& tree, const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits& gt)
-{
-  const auto closest = tree.closest_point_and_primitive(p);
-  return locate_in_face(closest.first, closest.second, tm, vpm, gt);
-}
-
-/// The same, for a point `p` expected near face `near`: the search starts from `p`'s closest
-/// point on `near`, so that the tree visits only the boxes closer than that (no search for a
-/// starting point among the tree's samples).
-template <class Point, class Tree, class TriangleMesh, class VertexPointMap, class GeomTraits>
-CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
-locate_with_AABB_tree(const Point& p, typename boost::graph_traits<TriangleMesh>::face_descriptor near,
-                      const Tree& tree, const TriangleMesh& tm, const VertexPointMap& vpm, const GeomTraits& gt)
-{
-  // the corners in the order of the tree's primitives, so that a point found on `near` has
-  // the same bits as the tree's own projection onto it
-  const auto h = halfedge(near, tm);
-  const auto triangle = gt.construct_triangle_3_object()(get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)),
-                                                         get(vpm, source(h, tm)));
-  const auto start = std::make_pair(gt.construct_projected_point_3_object()(triangle, p), near);
-  const auto closest = tree.closest_point_and_primitive(p, start);
-  return locate_in_face(closest.first, closest.second, tm, vpm, gt);
-}
-
 } // namespace internal
 } // namespace Surface_voronoi
 } // namespace CGAL

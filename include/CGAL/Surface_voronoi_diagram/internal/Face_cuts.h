@@ -224,13 +224,13 @@ private:
   {
     const Candidate_list& list = candidates[f];
     Face_cut& c = buffer.scratch;
-    c.pieces.clear();
-    c.degenerate = false;
-    c.whole_face = false;
-    if(list.size() == 1)
-      c.whole_face = true;   // the only candidate owns the whole triangle: no piece stored
-    else if(!list.empty())
+    if(list.size() > 1)
       Face_cutter(list).cut(c);
+    else
+    {
+      c.clear();
+      c.whole_face = (list.size() == 1);   // the only candidate owns the whole triangle: no piece stored
+    }
     buffer.add(f, c);
   }
 

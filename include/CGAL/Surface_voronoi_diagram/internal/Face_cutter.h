@@ -52,8 +52,8 @@ struct Piece_edge_support
 };
 
 /// A clipped triangle has at most 3 + (candidates - 1) vertices, and most cut faces have two
-/// or three candidates: six are kept inline, so that cutting a face allocates one block (its
-/// pieces), not two per piece and three per clip.
+/// or three candidates: six are kept inline, so that a piece allocates nothing of its own
+/// (and the vector of pieces is reused face after face, see `Face_cutter::cut(Face_cut&)`).
 struct Symbolic_piece
 {
   typedef boost::container::small_vector<Symbolic_vertex, 6> Vertex_list;
@@ -70,6 +70,14 @@ struct Face_cut
   // The only candidate owns the whole triangle, and `pieces` is left empty: the cut of most
   // faces, stitched without allocating anything for it.
   bool whole_face = false;
+
+  /// no pieces, no flags: its storage kept for the next cut
+  void clear()
+  {
+    pieces.clear();
+    degenerate = false;
+    whole_face = false;
+  }
 };
 
 class Face_cutter
@@ -118,9 +126,7 @@ public:
   /// the same into `result`, whose storage is reused (one cut after another allocates nothing)
   void cut(Face_cut& result) const
   {
-    result.pieces.clear();
-    result.degenerate = false;
-    result.whole_face = false;
+    result.clear();
     const std::uint32_t n = static_cast<std::uint32_t>(m_candidates.size());
     if(n == 1)
     {
