@@ -21,11 +21,13 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -53,23 +55,32 @@ public:
 
   Candidate_table() = default;
 
-  /// packs `lists`, which are left empty (their memory freed as they are read)
+  /// packs `lists`, which are left empty (their memory freed)
   explicit Candidate_table(Candidate_lists&& lists, bool parallel = false)
   {
-    const std::size_t nf = lists.size();
+    const std::size_t nf = lists.size(), chunk = 8192, chunks = number_of_chunks(nf, chunk);
+    // the candidates of each chunk of faces, then where each chunk's candidates begin
+    std::vector<std::size_t> chunk_first(chunks + 1, 0);
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      for(std::size_t f = begin; f < end; ++f) chunk_first[c + 1] += lists[f].size();
+    });
+    for(std::size_t c = 0; c < chunks; ++c) chunk_first[c + 1] += chunk_first[c];
+    const std::size_t total = chunk_first[chunks];
+    CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
     m_first.resize(nf + 1);
-    m_first[0] = 0;
-    std::size_t total = 0;
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      total += lists[f].size();
-      CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
-      m_first[f + 1] = static_cast<std::uint32_t>(total);
-    }
-    m_items.resize(total);
-    parallel_for_each_index(nf, parallel, [&](std::size_t f) {
-      std::copy(lists[f].begin(), lists[f].end(), m_items.begin() + m_first[f]);
-      lists[f] = Candidate_list();   // frees a list on the heap
+    m_first[nf] = static_cast<std::uint32_t>(total);
+    m_items.resize(total);   // unconstructed: the copy constructs them, and touches their pages
+    // The lists on the heap are freed afterwards, on one thread: freed by the threads of the
+    // copy, most of them allocated by another thread, they queued on the allocator's locks
+    // (the copy took as long on two threads as on one).
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      std::size_t first = chunk_first[c];
+      for(std::size_t f = begin; f < end; ++f)
+      {
+        m_first[f] = static_cast<std::uint32_t>(first);
+        std::uninitialized_copy(lists[f].begin(), lists[f].end(), m_items.data() + first);
+        first += lists[f].size();
+      }
     });
     Candidate_lists().swap(lists);
   }
@@ -101,12 +112,12 @@ public:
   void clear()
   {
     std::vector<std::uint32_t>().swap(m_first);
-    std::vector<Candidate>().swap(m_items);
+    decltype(m_items)().swap(m_items);
   }
 
 private:
   std::vector<std::uint32_t> m_first;   // face f's candidates: m_items[m_first[f]] .. m_items[m_first[f + 1]]
-  std::vector<Candidate> m_items;
+  std::vector<Candidate, Unconstructed_allocator<Candidate> > m_items;
 };
 
 } // namespace internal
