@@ -6,6 +6,7 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
 
@@ -154,6 +155,51 @@ TEST_CASE("diagram: the same run twice is bit-identical", "[diagram]")
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
+TEST_CASE("indexed mesh: the copy built in chunks on several threads is the sequential one", "[diagram][parallel]")
+{
+  // Meshes of several chunks of faces (8192), one with a border; and one with removed faces,
+  // whose descriptors are not indices (built sequentially whatever is asked).
+  std::vector<Mesh> ms(3);
+  GEN::make_torus(ms[0], 1.0, 0.3, 160, 64);
+  GEN::make_planar_grid(ms[1], 120, 100, 1.0, 0.8, 0., 0);
+  GEN::make_planar_grid(ms[2], 120, 100, 1.0, 0.8, 0., 0);
+  CGAL::Euler::remove_face(halfedge(*faces(ms[2]).begin(), ms[2]), ms[2]);
+  for(std::size_t k = 0; k < ms.size(); ++k)
+  {
+    INFO("mesh " << k << ", " << num_faces(ms[k]) << " faces");
+    REQUIRE(num_faces(ms[k]) > 2 * 8192);
+    const SV::internal::Indexed_mesh<Mesh> a(ms[k], get(CGAL::vertex_point, ms[k]), false);
+    for(int threads : { 1, 2, 4 })
+    {
+      INFO(threads << " threads");
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+      const SV::internal::Indexed_mesh<Mesh> b(ms[k], get(CGAL::vertex_point, ms[k]), true);
+      CHECK(a.points == b.points);
+      CHECK(a.triangles == b.triangles);
+      CHECK(a.neighbors == b.neighbors);
+      CHECK(a.edges == b.edges);
+      CHECK(a.edge_vertices == b.edge_vertices);
+      CHECK(a.face_areas == b.face_areas);
+      CHECK(a.face_component == b.face_component);
+      CHECK(a.total_area == b.total_area);
+      for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+        CHECK(a.face_handles[f] == b.face_handles[f]);
+    }
+    // every edge named once, by the lower of its faces, and found again from the other
+    std::vector<int> uses(a.number_of_edges(), 0);
+    for(std::size_t f = 0; f < a.number_of_faces(); ++f)
+      for(int l = 0; l < 3; ++l)
+      {
+        ++uses[a.edges[f][l]];
+        const auto& ev = a.edge_vertices[a.edges[f][l]];
+        const auto u = a.triangles[f][l], w = a.triangles[f][(l + 1) % 3];
+        CHECK(ev[0] == (std::min)(u, w));
+        CHECK(ev[1] == (std::max)(u, w));
+      }
+    for(std::size_t e = 0; e < uses.size(); ++e) CHECK((uses[e] == 1 || uses[e] == 2));
+  }
+}
+
 TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on any number of threads", "[diagram][parallel]")
 {
   // Meshes of several chunks (the parallel loops cut 4096 to 8192 faces or pieces at a time),

@@ -546,11 +546,11 @@ private:
         same_points = (Surface_voronoi::internal::to_point_d(get(m_vpm, shared->vertex_handles[v])) == shared->points[v]);
       if(same_points) return shared;
     }
-    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm);
+    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm, Surface_voronoi::internal::use_threads<ConcurrencyTag>());
   }
   std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric&, std::false_type) const
   {
-    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm);
+    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm, Surface_voronoi::internal::use_threads<ConcurrencyTag>());
   }
 
   void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,

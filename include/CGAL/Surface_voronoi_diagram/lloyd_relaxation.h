@@ -214,7 +214,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const std::size_t first_moving = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::first_moving_site), std::size_t(0));
 
   // indexed once for all the diagrams (and the checks for coincident sites)
-  const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm);
+  const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm, internal::use_threads<ConcurrencyTag>());
   const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
   internal::Nearest_point_of_cell<TriangleMesh, VPM, Geom_traits> projection(mesh, tm, vpm,
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));

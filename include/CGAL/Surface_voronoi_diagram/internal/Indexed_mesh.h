@@ -21,6 +21,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -156,15 +157,17 @@ struct Indexed_mesh
 
   Indexed_mesh() {}
 
+  /// With `parallel`, the copy runs in concurrent chunks of faces where the mesh numbers its
+  /// elements itself (a `Surface_mesh` without removed elements), with the sequential result.
   template <class VertexPointMap>
-  Indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm)
+  Indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, bool parallel = false)
   {
-    build(tm, vpm);
+    build(tm, vpm, parallel);
   }
 
   /// \pre `tm` is a valid triangle mesh with at least one face
   template <class VertexPointMap>
-  void build(const TriangleMesh& tm, VertexPointMap vpm)
+  void build(const TriangleMesh& tm, VertexPointMap vpm, bool parallel = false)
   {
     CGAL_precondition_msg(num_vertices(tm) < std::size_t(none) && num_faces(tm) < std::size_t(none) / 2,
                           "the mesh has too many elements for 32-bit indices");
@@ -173,43 +176,65 @@ struct Indexed_mesh
     face_handles.build(faces(tm), tm, CGAL::dynamic_face_property_t<Index>());
     vertex_index = vertex_handles.index_map();
     face_index = face_handles.index_map();
-    points.reserve(vertex_handles.size());
-    for(vertex_descriptor v : vertices(tm)) points.push_back(to_point_d(get(vpm, v)));
+    // in parallel only where descriptors are indices: the maps of other meshes may not be
+    // read from several threads at once
+    parallel = parallel && vertex_handles.is_identity() && face_handles.is_identity();
+    const std::size_t nv = vertex_handles.size(), nf = face_handles.size(), chunk = 8192;
+    points.resize(nv);
+    for_each_chunk(nv, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t v = begin; v < end; ++v) points[v] = to_point_d(get(vpm, vertex_handles[v]));
+    });
 
-    const std::size_t nf = face_handles.size();
     triangles.resize(nf);
-    neighbors.assign(nf, std::array<Index, 3>{ none, none, none });
+    neighbors.resize(nf);
     edges.resize(nf);
     face_areas.resize(nf);
-    for(Index fi = 0; fi < nf; ++fi)
-    {
-      halfedge_descriptor h = halfedge(face_handles[fi], tm);
-      for(int k = 0; k < 3; ++k)
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t fi = begin; fi < end; ++fi)
       {
-        // corner k = source of local edge k
-        triangles[fi][k] = get(vertex_index, source(h, tm));
-        const halfedge_descriptor opp = opposite(h, tm);
-        if(!is_border(opp, tm))
-          neighbors[fi][k] = get(face_index, face(opp, tm));
-        h = next(h, tm);
-      }
-      CGAL_precondition_msg(h == halfedge(face_handles[fi], tm), "every face must be a triangle");
-      face_areas[fi] = triangle_area(fi);
-      total_area += face_areas[fi];
-    }
-
-    // Global edge ids: the face with the smaller index names the edge first.
-    // (counted first: growing by doubling held a third more at the peak)
-    std::size_t number_of_new_edges = 0;
-    for(Index fi = 0; fi < nf; ++fi)
-      for(int k = 0; k < 3; ++k) number_of_new_edges += (neighbors[fi][k] == none || neighbors[fi][k] > fi);
-    edge_vertices.reserve(number_of_new_edges);
-    for(Index fi = 0; fi < nf; ++fi)
-      for(int k = 0; k < 3; ++k)
-      {
-        const Index g = neighbors[fi][k];
-        if(g != none && g < fi)
+        halfedge_descriptor h = halfedge(face_handles[fi], tm);
+        for(int k = 0; k < 3; ++k)
         {
+          // corner k = source of local edge k
+          triangles[fi][k] = get(vertex_index, source(h, tm));
+          const halfedge_descriptor opp = opposite(h, tm);
+          neighbors[fi][k] = is_border(opp, tm) ? none : get(face_index, face(opp, tm));
+          h = next(h, tm);
+        }
+        CGAL_precondition_msg(h == halfedge(face_handles[fi], tm), "every face must be a triangle");
+        face_areas[fi] = triangle_area(fi);
+      }
+    });
+    for(std::size_t fi = 0; fi < nf; ++fi) total_area += face_areas[fi];   // in face order, whatever the threads
+
+    // Global edge ids: the face with the smaller index names the edge first, in face order
+    // (the new edges of each chunk counted first, so that every chunk knows its first id).
+    const std::size_t chunks = number_of_chunks(nf, chunk);
+    std::vector<std::size_t> chunk_first_edge(chunks + 1, 0);
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      for(std::size_t fi = begin; fi < end; ++fi)
+        for(int k = 0; k < 3; ++k) chunk_first_edge[c + 1] += (neighbors[fi][k] == none || neighbors[fi][k] > fi);
+    });
+    for(std::size_t c = 0; c < chunks; ++c) chunk_first_edge[c + 1] += chunk_first_edge[c];
+    edge_vertices.resize(chunk_first_edge[chunks]);
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+      std::size_t e = chunk_first_edge[c];
+      for(std::size_t fi = begin; fi < end; ++fi)
+        for(int k = 0; k < 3; ++k)
+          if(neighbors[fi][k] == none || neighbors[fi][k] > fi)
+          {
+            edges[fi][k] = Index(e);
+            const Index a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
+            edge_vertices[e++] = { (std::min)(a, b), (std::max)(a, b) };
+          }
+    });
+    // the edges named by the neighbour: all named now
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t fi = begin; fi < end; ++fi)
+        for(int k = 0; k < 3; ++k)
+        {
+          const Index g = neighbors[fi][k];
+          if(g == none || g > fi) continue;
           const Index a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
           int kg = -1;
           for(int l = 0; l < 3; ++l)
@@ -218,13 +243,7 @@ struct Indexed_mesh
           CGAL_assertion(kg >= 0);   // a valid halfedge structure pairs the two faces
           edges[fi][k] = edges[g][kg];
         }
-        else
-        {
-          edges[fi][k] = Index(edge_vertices.size());
-          const Index a = triangles[fi][k], b = triangles[fi][(k + 1) % 3];
-          edge_vertices.push_back({ (std::min)(a, b), (std::max)(a, b) });
-        }
-      }
+    });
 
     compute_components();
     compute_bbox();
