@@ -159,6 +159,7 @@ public:
                                                    d.centroid_density.get()).run();
       d.statistics.broken_cells = 0;
       d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
+      summarize_candidates();
       summarize(regions_of_site);
       m_timer.stop("cutting");
       return progress(1.);
@@ -166,7 +167,10 @@ public:
     propagation.release_working_state();   // a repair after stitching builds it again
     // packed for stitching, where the memory peaks; a repair after it unpacks them
     d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
-    stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
+    // what the candidates alone decide (the vertices' owners) beside the stitching, whose
+    // naming of the vertices runs on one thread: the two write to different arrays
+    run_beside(m_settings.parallel, [&]() { stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel); },
+               [&]() { summarize_candidates(); });
     m_timer.stop("cutting");
 
     for(;; ++round)
@@ -192,11 +196,12 @@ public:
       repair_round();
       d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
       stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
+      summarize_candidates();
       if(!round_done()) return false;
     }
     m_timer.stop("repair");
-    // the cells' areas and the vertices' owners: part of building the cells, whatever the
-    // repair did (timed as repair, they were half its time at 537k vertices with nothing broken)
+    // the cells' areas: part of building the cells, whatever the repair did (timed as repair,
+    // they and the vertices' owners were half its time at 537k vertices with nothing broken)
     summarize(regions_of_site);
     m_timer.stop("cutting");
     return progress(1.);
@@ -235,6 +240,47 @@ private:
       m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
   }
 
+  // The statistics of the candidate lists, and the vertices' owners: the lowest (value,
+  // site) among the candidates of the faces around each vertex.
+  void summarize_candidates()
+  {
+    Diagram_data<TriangleMesh>& d = m_data;
+    Diagram_statistics& s = d.statistics;
+    std::vector<std::uint8_t> unreached_component(m_mesh.number_of_components, 0);
+    std::size_t total_candidates = 0, most = 0, unreached_faces = 0;
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      total_candidates += d.candidates[f].size();
+      most = (std::max)(most, d.candidates[f].size());
+      if(d.candidates[f].empty())
+      {
+        ++unreached_faces;
+        unreached_component[m_mesh.face_component[f]] = 1;
+      }
+    }
+    s.max_candidates_per_face = most;
+    s.unreached_faces = unreached_faces;
+    s.unreached_components = 0;
+    for(auto u : unreached_component) s.unreached_components += u;
+    s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
+    if(m_settings.cells_only) return;
+
+    d.vertex_site.assign(m_mesh.number_of_vertices(), no_site);
+    std::vector<double> best(m_mesh.number_of_vertices(), 0.);
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+      for(const Candidate& x : d.candidates[f])
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t v = m_mesh.triangles[f][k];
+          if(d.vertex_site[v] == no_site || x.value[k] < best[v] || (x.value[k] == best[v] && x.site < d.vertex_site[v]))
+          {
+            d.vertex_site[v] = x.site;
+            best[v] = x.value[k];
+          }
+        }
+  }
+
+  // The cells' areas and pieces, once the candidates are summarized.
   void summarize(const std::vector<std::size_t>& regions_of_site)
   {
     Diagram_data<TriangleMesh>& d = m_data;
@@ -259,38 +305,8 @@ private:
       else ++s.cells;
       s.pieces += d.cell_pieces[i];
     }
-    std::vector<std::uint8_t> unreached_component(m_mesh.number_of_components, 0);
-    std::size_t total_candidates = 0;
-    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-    {
-      total_candidates += d.candidates[f].size();
-      s.max_candidates_per_face = (std::max)(s.max_candidates_per_face, d.candidates[f].size());
-      if(d.candidates[f].empty())
-      {
-        ++s.unreached_faces;
-        unreached_component[m_mesh.face_component[f]] = 1;
-      }
-    }
-    for(auto u : unreached_component) s.unreached_components += u;
-    s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
     s.welded_vertices = d.partition.welded_vertices;
     s.inserted_vertices = d.partition.inserted_vertices;
-    if(m_settings.cells_only) return;
-
-    // vertex owners: the lowest (value, site) among the candidates of the faces around
-    d.vertex_site.assign(m_mesh.number_of_vertices(), no_site);
-    std::vector<double> best(m_mesh.number_of_vertices(), 0.);
-    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-      for(const Candidate& x : d.candidates[f])
-        for(int k = 0; k < 3; ++k)
-        {
-          const std::size_t v = m_mesh.triangles[f][k];
-          if(d.vertex_site[v] == no_site || x.value[k] < best[v] || (x.value[k] == best[v] && x.site < d.vertex_site[v]))
-          {
-            d.vertex_site[v] = x.site;
-            best[v] = x.value[k];
-          }
-        }
   }
 
   Diagram_data<TriangleMesh>& m_data;

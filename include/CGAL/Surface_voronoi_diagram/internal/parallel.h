@@ -24,6 +24,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 #endif
 
 #include <algorithm>
@@ -92,6 +93,27 @@ void parallel_for_each_index(std::size_t n, bool parallel, const Function& f)
   for_each_chunk(n, 4096, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
     for(std::size_t i = begin; i < end; ++i) f(i);
   });
+}
+
+/// Runs `main` and `beside`, with `parallel` possibly at the same time (`beside` as a task
+/// another thread may take while `main` runs); they must not write to the same data.
+template <class Main, class Beside>
+void run_beside(bool parallel, const Main& main, const Beside& beside)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel)
+  {
+    tbb::task_group group;
+    group.run([&]() { beside(); });
+    main();
+    group.wait();
+    return;
+  }
+#else
+  CGAL_USE(parallel);
+#endif
+  main();
+  beside();
 }
 
 } // namespace internal
