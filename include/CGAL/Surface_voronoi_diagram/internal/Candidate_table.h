@@ -58,14 +58,14 @@ public:
   /// packs `lists`, which are left empty (their memory freed)
   explicit Candidate_table(Candidate_lists&& lists, bool parallel = false)
   {
-    const std::size_t nf = lists.size(), chunk = 8192, chunks = number_of_chunks(nf, chunk);
-    // the candidates of each chunk of faces, then where each chunk's candidates begin
-    std::vector<std::size_t> chunk_first(chunks + 1, 0);
-    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
-      for(std::size_t f = begin; f < end; ++f) chunk_first[c + 1] += lists[f].size();
+    const std::size_t nf = lists.size(), chunk = 8192;
+    // where each chunk of faces' candidates begin
+    const std::vector<std::size_t> chunk_first = chunk_offsets(nf, chunk, parallel, [&](std::size_t begin, std::size_t end) {
+      std::size_t candidates = 0;
+      for(std::size_t f = begin; f < end; ++f) candidates += lists[f].size();
+      return candidates;
     });
-    for(std::size_t c = 0; c < chunks; ++c) chunk_first[c + 1] += chunk_first[c];
-    const std::size_t total = chunk_first[chunks];
+    const std::size_t total = chunk_first.back();
     CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
     m_first.resize(nf + 1);
     m_first[nf] = static_cast<std::uint32_t>(total);

@@ -209,14 +209,13 @@ struct Indexed_mesh
 
     // Global edge ids: the face with the smaller index names the edge first, in face order
     // (the new edges of each chunk counted first, so that every chunk knows its first id).
-    const std::size_t chunks = number_of_chunks(nf, chunk);
-    std::vector<std::size_t> chunk_first_edge(chunks + 1, 0);
-    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+    const std::vector<std::size_t> chunk_first_edge = chunk_offsets(nf, chunk, parallel, [&](std::size_t begin, std::size_t end) {
+      std::size_t new_edges = 0;
       for(std::size_t fi = begin; fi < end; ++fi)
-        for(int k = 0; k < 3; ++k) chunk_first_edge[c + 1] += (neighbors[fi][k] == none || neighbors[fi][k] > fi);
+        for(int k = 0; k < 3; ++k) new_edges += (neighbors[fi][k] == none || neighbors[fi][k] > fi);
+      return new_edges;
     });
-    for(std::size_t c = 0; c < chunks; ++c) chunk_first_edge[c + 1] += chunk_first_edge[c];
-    edge_vertices.resize(chunk_first_edge[chunks]);
+    edge_vertices.resize(chunk_first_edge.back());
     for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
       std::size_t e = chunk_first_edge[c];
       for(std::size_t fi = begin; fi < end; ++fi)

@@ -95,6 +95,18 @@ void parallel_for_each_index(std::size_t n, bool parallel, const Function& f)
   });
 }
 
+/// Where each chunk's share of a total begins, for chunks that fill one array in order:
+/// `count(begin, end)` is the share of elements `[begin, end)`; the result has one entry per
+/// chunk and a last one, the total.
+template <class Count>
+std::vector<std::size_t> chunk_offsets(std::size_t n, std::size_t size, bool parallel, const Count& count)
+{
+  std::vector<std::size_t> first(number_of_chunks(n, size) + 1, 0);
+  for_each_chunk(n, size, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) { first[c + 1] = count(begin, end); });
+  for(std::size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
+  return first;
+}
+
 /// Runs `main` and `beside`, with `parallel` possibly at the same time (`beside` as a task
 /// another thread may take while `main` runs); they must not write to the same data.
 template <class Main, class Beside>
