@@ -233,7 +233,7 @@ private:
     const Point_d& o = m_mesh.corner(f, 0);
     const Point_d& q = m_mesh.corner(f, 1);
     const Point_d& r = m_mesh.corner(f, 2);
-    const double t = triangle_area(o, q, r);
+    const double t = m_mesh.face_areas[f];   // triangle_area(o, q, r), computed once by the mesh
     out.area[x.site] += t;
     std::array<double, 3>& moment = out.moment[x.site];
     for(int j = 0; j < 3; ++j) moment[j] += t * (o[j] + q[j] + r[j]) / 3.;

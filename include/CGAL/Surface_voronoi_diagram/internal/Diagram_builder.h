@@ -173,6 +173,7 @@ public:
                [&]() { summarize_candidates(); });
     m_timer.stop("cutting");
 
+    bool restitched = false;
     for(;; ++round)
     {
       if(decided_on_cuts && d.partition.welded_vertices == 0 && d.partition.dropped_pieces == 0)
@@ -196,9 +197,10 @@ public:
       repair_round();
       d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
       stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
-      summarize_candidates();
+      restitched = true;
       if(!round_done()) return false;
     }
+    if(restitched) summarize_candidates();   // the candidates a repair changed
     m_timer.stop("repair");
     // the cells' areas: part of building the cells, whatever the repair did (timed as repair,
     // they and the vertices' owners were half its time at 537k vertices with nothing broken)
