@@ -127,6 +127,122 @@ TEST_CASE("lloyd: cells measured on the cuts are those of the stitched partition
   }
 }
 
+namespace {
+
+// A Lloyd step's diagram starts its propagation from the candidates of the diagram before the
+// sites moved (Propagation::run_from()). `exact`: sites moved by a Lloyd step, from which it
+// must give the fresh diagram's candidates face by face and its measures bit for bit.
+// Otherwise (sites moved anywhere, most previous candidates wrong) the propagation's order
+// differs so much that a field may stop elsewhere, as after a propagation in blocks: it must
+// still be a diagram of these sites (every cell one region, holding its site; the areas summing
+// to the surface; every field a face holds held or dominated across each edge, where the
+// repair banned none).
+template <class Metric, class NP>
+void check_started_from_previous(const Mesh& m, Metric& metric, const std::vector<Location<Mesh> >& before,
+                                 const std::vector<Location<Mesh> >& after, const NP& np, bool exact)
+{
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
+  const Diagram first(m, metric, before, SV::parameters::cells_only(true, np));
+  const auto previous = std::make_shared<const SV::internal::Candidate_sites>(SV::internal::Diagram_access::data(first).candidates);
+  const Diagram fresh(m, metric, after, SV::parameters::cells_only(true, np));
+  const Diagram started(m, metric, after, SV::parameters::cells_only(true, SV::parameters::previous_candidates(previous, np)));
+  REQUIRE(fresh.statistics().broken_cells == 0);
+  CHECK(started.statistics().broken_cells == 0);
+  CHECK(started.statistics().unreached_faces == 0);
+  // it did start from them: a fresh propagation's count of events is not the same
+  CHECK(started.statistics().propagation_events != fresh.statistics().propagation_events);
+  const auto& data = SV::internal::Diagram_access::data(started);
+  const auto& a = SV::internal::Diagram_access::data(fresh).candidates;
+  const auto& b = data.candidates;
+  REQUIRE(a.size() == b.size());
+  std::size_t other_lists = 0, open_edges = 0;
+  for(std::size_t f = 0; f < a.size(); ++f)
+  {
+    bool same = a[f].size() == b[f].size();
+    for(std::size_t k = 0; same && k < a[f].size(); ++k) same = a[f][k].site == b[f][k].site && a[f][k].value == b[f][k].value;
+    other_lists += same ? 0 : 1;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t g = data.mesh->neighbors[f][k];
+      if(g == SV::internal::Indexed_mesh<Mesh>::none || (!data.breaklines.empty() && data.breaklines.is_blocked(data.mesh->edges[f][k])))
+        continue;
+      for(const auto& x : b[f])
+      {
+        if(SV::internal::values_of(b[g], x.site)) continue;
+        SV::internal::Candidate y(x.site, {{ 0., 0., 0. }});
+        for(int c = 0; c < 3; ++c) y.value[c] = data.embedding->value(x.site, data.mesh->triangles[g][c]);
+        bool dominated = false;
+        for(const auto& z : b[g]) dominated = dominated || SV::internal::dominates(z, y);
+        open_edges += dominated ? 0 : 1;
+      }
+    }
+  }
+  // (the repair bans fields from the faces of a cell's pieces cut off from its site)
+  if(started.statistics().broken_cells_before_repair == 0) CHECK(open_edges == 0);
+  const double area = fresh.surface_area();
+  double total = 0;
+  for(std::size_t i = 0; i < after.size(); ++i)
+  {
+    if(exact)
+    {
+      CHECK(started.cell_area(i) == fresh.cell_area(i));
+      CHECK(started.cell_centroid(i) == fresh.cell_centroid(i));
+    }
+    CHECK(started.cell_area(i) > 0);
+    CHECK(SV::internal::values_of(b[data.sites[i].face], static_cast<std::uint32_t>(i)) != nullptr);
+    total += started.cell_area(i);
+  }
+  if(exact) CHECK(other_lists == 0);
+  CHECK(total == Approx(area).epsilon(1e-12));
+}
+
+} // namespace
+
+TEST_CASE("lloyd: a diagram started from the one before its sites moved is the diagram computed afresh", "[lloyd]")
+{
+  SECTION("thin lampshade, Euclidean, biharmonic and a power diagram")
+  {
+    Mesh m;
+    GEN::Lampshade_options lo;
+    lo.target_vertices = 3000;
+    GEN::make_thin_lampshade(m, lo);
+    const auto before = area_uniform_locations(m, 80, 4);
+    Euclidean e(m);
+    const auto moved = SV::lloyd_relaxation(m, e, before, CGAL::parameters::number_of_iterations(1)).sites;
+    check_started_from_previous(m, e, before, moved, CGAL::parameters::default_values(), true);
+    check_started_from_previous(m, e, before, area_uniform_locations(m, 80, 5), CGAL::parameters::default_values(), false);
+    std::vector<double> weights(before.size());
+    for(std::size_t i = 0; i < weights.size(); ++i) weights[i] = 2e-4 * double(i % 7);
+    check_started_from_previous(m, e, before, moved, SV::parameters::site_weight_map(CGAL::make_property_map(weights)), true);
+    CGAL::Biharmonic_embedding<Mesh> b(m);
+    const auto moved_b = SV::lloyd_relaxation(m, b, before, CGAL::parameters::number_of_iterations(1)).sites;
+    check_started_from_previous(m, b, before, moved_b, CGAL::parameters::default_values(), true);
+    check_started_from_previous(m, b, before, area_uniform_locations(m, 80, 6), CGAL::parameters::default_values(), false);
+  }
+  SECTION("a breakline with sites on it")
+  {
+    Mesh m;
+    GEN::make_planar_grid(m, 21, 21, 1.0, 1.0);   // spacing 0.05
+    auto line = m.add_property_map<Mesh::Edge_index, bool>("e:breakline", false).first;
+    for(auto ed : edges(m))
+    {
+      const Point p = m.point(source(halfedge(ed, m), m)), q = m.point(target(halfedge(ed, m), m));
+      line[ed] = std::abs(p.x() - 0.5) < 1e-9 && std::abs(q.x() - 0.5) < 1e-9 && p.y() < 0.7 + 1e-9 && q.y() < 0.7 + 1e-9;
+    }
+    std::vector<Point> points = { Point(0.5, 0.125, 0), Point(0.5, 0.425, 0) };   // on the line, inside edges
+    for(const auto& l : area_uniform_locations(m, 30, 8)) points.push_back(point_of(l, m));
+    Euclidean e(m);
+    const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> locate(m, e, points);
+    std::vector<Location<Mesh> > before;
+    for(std::size_t i = 0; i < points.size(); ++i) before.push_back(locate.site_location(i));
+    const auto np = CGAL::parameters::edge_is_constrained_map(line);
+    const auto moved = SV::lloyd_relaxation(m, e, before, SV::parameters::first_moving_site(2, np.number_of_iterations(1))).sites;
+    REQUIRE(!SV::internal::Diagram_access::data(CGAL::Surface_voronoi_diagram<Mesh, Euclidean>(m, e, moved, np)).breakline_site_faces.empty());
+    check_started_from_previous(m, e, before, moved, np, true);
+    check_started_from_previous(m, e, before, area_uniform_locations(m, 32, 9), np, false);
+  }
+}
+
 TEST_CASE("lloyd: a vertex density map draws the sites where it is high", "[lloyd][density]")
 {
   Mesh m;

@@ -521,6 +521,11 @@ private:
     settings.cells_only = choose_parameter(get_parameter(np, SVnp::cells_only), false);
     m_data.centroid_density = choose_parameter(get_parameter(np, SVnp::centroid_density), std::shared_ptr<const std::vector<double> >());
     CGAL_precondition(!m_data.centroid_density || m_data.centroid_density->size() == m_data.mesh->number_of_vertices());
+    const std::shared_ptr<const SVi::Candidate_sites> previous =
+        choose_parameter(get_parameter(np, SVnp::previous_candidates), std::shared_ptr<const SVi::Candidate_sites>());
+    if(previous && previous->number_of_faces() == m_data.mesh->number_of_faces()
+       && std::all_of(previous->sites.begin(), previous->sites.end(), [&](std::uint32_t s) { return s < m_data.sites.size(); }))
+      settings.previous = previous.get();
     if(callback && !callback(0.05)) { cancel(); return; }
     compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
   }

@@ -222,12 +222,14 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
 
   Lloyd_result<TriangleMesh> result;
   std::vector<Location> previous = sites;
+  std::shared_ptr<const internal::Candidate_sites> previous_candidates;   // each diagram's propagation starts from the last's
   for(std::size_t it = 0;; ++it)
   {
     result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
     const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
     const auto cells_np = Surface_voronoi::parameters::shared_indexed_mesh(shared_mesh, Surface_voronoi::parameters::cells_only(true,
-                          Surface_voronoi::parameters::centroid_density(density, np)));
+                          Surface_voronoi::parameters::previous_candidates(previous_candidates,
+                          Surface_voronoi::parameters::centroid_density(density, np))));
     const Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
     if(diagram.is_cancelled())
     {
@@ -238,6 +240,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     previous = sites;
     result.energies.push_back(diagram.energy());
     if(it == iterations) break;
+    previous_candidates = std::make_shared<const internal::Candidate_sites>(internal::Diagram_access::data(diagram).candidates);
     // the centroids projected to the surface, constructed with the geometric traits: these
     // are the locations the caller receives
     std::vector<typename Diagram::Point_3> moved;

@@ -76,6 +76,7 @@ enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
 enum vertex_density_map_t { vertex_density_map };
 enum max_density_ratio_t { max_density_ratio };
 enum centroid_density_t { centroid_density };
+enum previous_candidates_t { previous_candidates };
 enum sample_border_t { sample_border };
 enum corner_angle_t { corner_angle };
 enum placed_sites_t { placed_sites };
@@ -329,6 +330,9 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_column_memory)
 // An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
 // density (a std::shared_ptr to a std::vector<double> by internal vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
+// An internal hook, not API: lloyd_relaxation() starts each diagram's propagation from the
+// previous diagram's candidates (a std::shared_ptr to the internal Candidate_sites, or null).
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(previous_candidates)
 // lloyd_relaxation() keeps the sites before this index in place (the sites on feature lines,
 // placed first; add_sites_for_valid_dual() relaxes only the sites it added).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)

@@ -120,6 +120,29 @@ private:
   std::vector<Candidate, Unconstructed_allocator<Candidate> > m_items;
 };
 
+/// The sites of each face's candidates, without their values: the diagram a Lloyd step
+/// starts from (`Propagation::run_from()`), a few bytes per candidate.
+struct Candidate_sites
+{
+  Candidate_sites() = default;
+  explicit Candidate_sites(const Candidate_table& table)
+    : first(table.size() + 1, 0)
+  {
+    sites.reserve(table.number_of_candidates());
+    for(std::size_t f = 0; f < table.size(); ++f)
+    {
+      first[f] = static_cast<std::uint32_t>(sites.size());
+      for(const Candidate& x : table[f]) sites.push_back(x.site);
+    }
+    first[table.size()] = static_cast<std::uint32_t>(sites.size());
+  }
+
+  std::size_t number_of_faces() const { return first.empty() ? 0 : first.size() - 1; }
+
+  std::vector<std::uint32_t> first;   // face f's sites: sites[first[f]] .. sites[first[f + 1]]
+  std::vector<std::uint32_t> sites;
+};
+
 } // namespace internal
 } // namespace Surface_voronoi
 } // namespace CGAL

@@ -49,6 +49,7 @@ struct Builder_settings
   bool has_weights = false;
   bool parallel = false;   // propagation blocks, cutting, stitching and checking in concurrent chunks (TBB)
   bool cells_only = false; // no vertex owners (Lloyd's diagrams)
+  const Candidate_sites* previous = nullptr;   // Lloyd's: the candidates before the sites moved (embedding metrics)
 };
 
 template <class TriangleMesh, class Fields>
@@ -82,6 +83,8 @@ public:
                                                                          m_settings.parallel);
     if(global_nearest)
       find_global_nearest(propagation.candidates);
+    else if(m_settings.previous && std::is_same<Fields, Embedding_values>::value)
+      propagation.run_from(*m_settings.previous);
     else
       propagation.run();
     m_fields.propagation_done();

@@ -28,6 +28,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Four_ary_heap.h>
@@ -137,6 +138,99 @@ public:
       drain(m_front, no_ban, nullptr);
     }
     parallel_for_each_index(candidates.size(), m_parallel, [this](std::size_t f) { clean_candidate_list(candidates[f]); });
+  }
+
+  /// A Lloyd step's propagation: from the candidates of the diagram before the sites moved
+  /// (`previous`: the same sites by index, on this mesh), which are mostly this diagram's too.
+  /// The previous candidates are the lists to start from, with the fields' new values; each
+  /// site's field then spreads from its own face, site by site, as the first propagation's
+  /// does (into a neighbour where the site is already a candidate without computing anything,
+  /// into another unless dominated there; never on from a face where it is dominated), and
+  /// a previous candidate its field does not reach is dropped. A field stopped by such a
+  /// dropped candidate is offered again around the faces that lost one. Spreading site by
+  /// site keeps to the cell's few faces, where the first propagation's queue jumps across the
+  /// mesh in the order of the values (a third of a Lloyd step). The candidates can differ from
+  /// a fresh propagation's where fields arrived in another order (a field admitted before one
+  /// that dominates it stays, and goes on): such a cell comes out in pieces and the repair
+  /// mends it, as after a propagation in blocks. Sequential.
+  void run_from(const Candidate_sites& previous)
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    CGAL_precondition(previous.number_of_faces() == nf);
+    candidates.assign(nf, Candidate_list());
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::uint32_t i = previous.first[f]; i < previous.first[f + 1]; ++i)
+      {
+        CGAL_precondition(previous.sites[i] < m_site_faces.size());
+        candidates[f].push_back(Candidate(previous.sites[i], field_values(previous.sites[i], f), unreached));
+      }
+    // every site's field from its own face (and those of a site on a breakline)
+    std::vector<std::vector<std::size_t> > extra_starts(m_site_faces.size());
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) extra_starts[x.first].push_back(x.second);
+    std::vector<std::uint32_t> queue, order(m_site_faces.size());
+    for(std::uint32_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
+      return m_site_faces[a] < m_site_faces[b] || (m_site_faces[a] == m_site_faces[b] && a < b);
+    });
+    for(std::uint32_t s : order)
+    {
+      queue.clear();
+      start_at(s, m_site_faces[s], queue);
+      for(std::size_t f : extra_starts[s]) start_at(s, f, queue);
+      for(std::size_t next = 0; next < queue.size(); ++next) spread(s, queue[next], queue, nullptr);
+    }
+    // The previous candidates no field reached are dropped, and the dominated candidates as
+    // after any propagation; what they stopped is offered again around the faces that lost
+    // one, until none does: every field a face holds is then held or dominated across each of
+    // its edges, as after a fresh propagation.
+    std::vector<std::uint8_t> changed(nf, 0);
+    auto prune = [this, &changed](std::size_t f) {
+      Candidate_list& list = candidates[f];
+      const std::size_t before = list.size();
+      list.erase(std::remove_if(list.begin(), list.end(), [](const Candidate& x) { return x.from_edge == unreached; }), list.end());
+      clean_candidate_list(list);
+      if(list.size() != before) changed[f] = 1;
+    };
+    parallel_for_each_index(nf, m_parallel, prune);
+    std::vector<std::uint32_t> changed_faces, touched;
+    for(std::size_t f = 0; f < nf; ++f)
+      if(changed[f]) changed_faces.push_back(static_cast<std::uint32_t>(f));
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > again;   // (site, face) to spread again
+    for(std::size_t round = 0; !changed_faces.empty(); ++round)
+    {
+      if(round == max_rounds_from_previous) { run(); return; }   // not expected: start afresh
+      again.clear();
+      for(std::uint32_t f : changed_faces)
+      {
+        changed[f] = 0;
+        for(const Candidate& x : candidates[f]) again.emplace_back(x.site, f);
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::uint32_t g = m_links[f].neighbor[k];
+          if(g != no_link)
+            for(const Candidate& x : candidates[g]) again.emplace_back(x.site, g);
+        }
+      }
+      const std::size_t offered = again.size();
+      for(std::size_t next = 0; next < again.size(); ++next)
+      {
+        const std::pair<std::uint32_t, std::uint32_t> x = again[next];
+        spread(x.first, x.second, queue, &again);
+      }
+      touched.clear();
+      for(std::size_t next = offered; next < again.size(); ++next) touched.push_back(again[next].second);
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      changed_faces.clear();
+      for(std::uint32_t f : touched)
+      {
+        prune(f);
+        if(changed[f]) changed_faces.push_back(f);
+      }
+    }
+    for(const Candidate_list& list : candidates) statistics.admitted += list.size();
+    m_offers_complete = false;   // a repair marks the candidates as offered (restore_offers())
   }
 
   /// Frees what a repair's propagation reads besides the candidates (the faces' links and
@@ -288,6 +382,76 @@ private:
     std::uint8_t shared_corners[3];   // corner of f.c_k in the neighbour | that of f.c_(k+1) << 2
   };
   static constexpr std::uint32_t no_link = std::uint32_t(-1);
+
+  // `from_edge` of a previous candidate that a Lloyd step's propagation has not reached yet
+  static constexpr std::uint8_t unreached = 4;
+  // the rounds of offers after which run_from() gives up and propagates afresh
+  static constexpr std::size_t max_rounds_from_previous = 64;
+
+  static Candidate* find_site(Candidate_list& list, std::uint32_t site)
+  {
+    for(Candidate& x : list)
+      if(x.site == site) return &x;
+    return nullptr;
+  }
+
+  static bool is_dominated(const Candidate_list& list, const Candidate& x)
+  {
+    for(const Candidate& b : list)
+      if(b.site != x.site && dominates(b, x)) return true;
+    return false;
+  }
+
+  // run_from(): the field of `site` starts in its face `f`
+  void start_at(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue)
+  {
+    Candidate* x = find_site(candidates[f], site);
+    if(x && x->from_edge != unreached && x->from_edge != Candidate::at_site) return;   // reached before: cannot be
+    if(!x)
+      candidates[f].push_back(Candidate(site, field_values(site, f), Candidate::at_site));
+    else if(x->from_edge == Candidate::at_site)
+      return;   // a second start in the same face
+    else
+      x->from_edge = Candidate::at_site;
+    queue.push_back(static_cast<std::uint32_t>(f));
+  }
+
+  // run_from(): the field of `site`, reached in face `f`, goes on into the neighbours where it
+  // is not yet (those it enters go to `queue`, or with their site to `again`)
+  void spread(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue,
+              std::vector<std::pair<std::uint32_t, std::uint32_t> >* again)
+  {
+    ++statistics.events;
+    const Candidate* here = find_site(candidates[f], site);
+    CGAL_assertion(here != nullptr && here->from_edge != unreached);
+    if(is_dominated(candidates[f], *here)) return;
+    const Candidate x = *here;   // the lists below may grow
+    const Face_link& l = m_links[f];
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t g = l.neighbor[k];
+      if(g == no_link) continue;
+      const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
+      const std::uint8_t from_edge = static_cast<std::uint8_t>((fresh + 1) % 3);
+      Candidate_list& list = candidates[g];
+      if(Candidate* seen = find_site(list, site))
+      {
+        if(seen->from_edge != unreached) continue;
+        seen->from_edge = from_edge;   // its values are the same numbers: the field is one of the vertex
+      }
+      else
+      {
+        Candidate y(site, {{ 0., 0., 0. }}, from_edge);
+        y.value[a] = x.value[k];
+        y.value[b] = x.value[(k + 1) % 3];
+        y.value[fresh] = m_fields.value(site, l.fresh_vertex[k]);
+        if(is_dominated(list, y)) { ++statistics.pruned; continue; }
+        list.push_back(y);
+      }
+      if(again) again->emplace_back(site, g);
+      else queue.push_back(g);
+    }
+  }
 
   // What was offered to a face and is not among its candidates was dominated by them, and
   // stays dominated while the face is not repaired (its list only grows, and dominance is
