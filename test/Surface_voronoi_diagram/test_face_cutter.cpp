@@ -372,7 +372,7 @@ TEST_CASE("face cuts: the flat store gives back every face's cut, also after fac
     return fc_fields(sites);
   };
   const std::size_t nf = 20000;   // more than two chunks
-  SVI::Candidate_lists lists(nf);
+  SVI::Candidate_lists lists(nf, SVI::Candidate_list());
   for(auto& l : lists) l = random_list();
   auto same = [](const SVI::Face_cuts::Cut& got, const SVI::Candidate_list& list) {
     if(list.empty()) return got.pieces.empty() && !got.whole_face && !got.degenerate;

@@ -855,7 +855,7 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
   for(bool parallel : { false, true })
   {
     // empty lists, inline ones, and lists on the heap, over more faces than a parallel chunk
-    SVI::Candidate_lists lists(10000);
+    SVI::Candidate_lists lists(10000, SVI::Candidate_list());
     for(std::size_t f = 0; f < lists.size(); ++f)
       for(std::size_t k = 0, n = std::size_t(rng() % 6); k < n; ++k)
         lists[f].push_back(SVI::Candidate(std::uint32_t(rng() % 1000), {{ double(rng()), double(f), double(k) }},

@@ -100,7 +100,7 @@ public:
   /// the lists again, for a propagation to grow them
   Candidate_lists to_lists() const
   {
-    Candidate_lists lists(size());
+    Candidate_lists lists(size(), Candidate_list());
     for(std::size_t f = 0; f < lists.size(); ++f)
     {
       const List l = (*this)[f];

@@ -20,6 +20,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 
@@ -45,7 +46,7 @@ inline std::uint32_t spread_bits(std::uint32_t x)
 /// number of faces), in curve order.
 /// \pre `0 < count <= number of faces`
 template <class TriangleMesh>
-std::vector<std::uint32_t> face_blocks(const Indexed_mesh<TriangleMesh>& mesh, std::size_t count)
+std::vector<std::uint32_t> face_blocks(const Indexed_mesh<TriangleMesh>& mesh, std::size_t count, bool parallel = false)
 {
   const std::size_t nf = mesh.number_of_faces();
   CGAL_precondition(count > 0 && count <= nf);
@@ -54,31 +55,46 @@ std::vector<std::uint32_t> face_blocks(const Indexed_mesh<TriangleMesh>& mesh, s
     const auto& t = mesh.triangles[f];
     return (mesh.points[t[0]][axis] + mesh.points[t[1]][axis] + mesh.points[t[2]][axis]) / 3.;
   };
-  std::array<double, 3> lo, hi;
-  for(int a = 0; a < 3; ++a) lo[a] = hi[a] = centroid(0, a);
-  for(std::size_t f = 1; f < nf; ++f)
+  // the box of the centroids, by chunks (a minimum and a maximum are the same in any order)
+  typedef std::array<std::array<double, 3>, 2> Box;
+  const std::size_t chunk = 65536;
+  std::vector<Box> box_of_chunk(number_of_chunks(nf, chunk));
+  for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+    Box& b = box_of_chunk[c];
+    for(int a = 0; a < 3; ++a) b[0][a] = b[1][a] = centroid(begin, a);
+    for(std::size_t f = begin + 1; f < end; ++f)
+      for(int a = 0; a < 3; ++a)
+      {
+        const double x = centroid(f, a);
+        b[0][a] = (std::min)(b[0][a], x);
+        b[1][a] = (std::max)(b[1][a], x);
+      }
+  });
+  std::array<double, 3> lo = box_of_chunk[0][0], hi = box_of_chunk[0][1];
+  for(const Box& b : box_of_chunk)
     for(int a = 0; a < 3; ++a)
     {
-      const double c = centroid(f, a);
-      lo[a] = (std::min)(lo[a], c);
-      hi[a] = (std::max)(hi[a], c);
+      lo[a] = (std::min)(lo[a], b[0][a]);
+      hi[a] = (std::max)(hi[a], b[1][a]);
     }
   std::vector<std::uint32_t> cell(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    std::uint32_t code = 0;
-    for(int a = 0; a < 3; ++a)
+  for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for(std::size_t f = begin; f < end; ++f)
     {
-      const double extent = hi[a] - lo[a];
-      // a NaN or an empty extent lands in cell 0; the grid's last cell takes the upper end
-      double x = extent > 0 ? (centroid(f, a) - lo[a]) / extent * grid : 0.;
-      if(!(x >= 0)) x = 0;
-      const std::uint32_t i = (std::min)(grid - 1, static_cast<std::uint32_t>((std::min)(x, double(grid - 1))));
-      code |= spread_bits(i) << a;
+      std::uint32_t code = 0;
+      for(int a = 0; a < 3; ++a)
+      {
+        const double extent = hi[a] - lo[a];
+        // a flat box, or a centroid that is not a number, goes to the first cell
+        double x = extent > 0 ? (centroid(f, a) - lo[a]) / extent * grid : 0.;
+        if(!(x >= 0)) x = 0;
+        const std::uint32_t i = (std::min)(grid - 1, static_cast<std::uint32_t>((std::min)(x, double(grid - 1))));
+        code |= spread_bits(i) << a;
+      }
+      cell[f] = code;
     }
-    cell[f] = code;
-  }
-  // counting sort by cell, faces in index order within a cell
+  });
+  // a counting sort by cell, sequential (262,144 counters)
   std::vector<std::uint32_t> start(grid * grid * grid + 1, 0);
   for(std::size_t f = 0; f < nf; ++f) ++start[cell[f] + 1];
   for(std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
