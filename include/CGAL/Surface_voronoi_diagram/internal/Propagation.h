@@ -144,16 +144,17 @@ public:
   /// A Lloyd step's propagation: from the candidates of the diagram before the sites moved
   /// (`previous`: the same sites by index, on this mesh), which are mostly this diagram's too.
   /// The previous candidates are the lists to start from, with the fields' new values; each
-  /// site's field then spreads from its own face, site by site, as the first propagation's
-  /// does (into a neighbour where the site is already a candidate without computing anything,
-  /// into another unless dominated there; never on from a face where it is dominated), and
-  /// a previous candidate its field does not reach is dropped. A field stopped by such a
-  /// dropped candidate is offered again around the faces that lost one. Spreading site by
-  /// site keeps to the cell's few faces, where the first propagation's queue jumps across the
-  /// mesh in the order of the values (a third of a Lloyd step). The candidates can differ from
-  /// a fresh propagation's where fields arrived in another order (a field admitted before one
-  /// that dominates it stays, and goes on): such a cell comes out in pieces and the repair
-  /// mends it, as after a propagation in blocks. Sequential.
+  /// site's field then spreads from its own face, site by site in the order of their faces
+  /// (into a neighbour where the site is already a candidate without computing anything, into
+  /// another unless dominated there; never on from a face where it is dominated), and a
+  /// previous candidate its field does not reach is dropped. The fields that a dropped or
+  /// dominated candidate may have stopped are offered again around its face, until no face
+  /// loses one. Spreading site by site keeps to the cells' few faces, where the first
+  /// propagation's queue jumps across the mesh in the order of the values (it was half of a
+  /// Lloyd step). From sites that moved far, the candidates can differ from a fresh
+  /// propagation's, whose order of values decides which of two fields stops the other: a cell
+  /// may come out in pieces, which the repair mends, as after a propagation in blocks.
+  /// Sequential (the candidates' cleaning excepted).
   void run_from(const Candidate_sites& previous)
   {
     const std::size_t nf = m_mesh.number_of_faces();
