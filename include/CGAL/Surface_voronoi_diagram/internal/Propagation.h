@@ -433,20 +433,15 @@ private:
     {
       const std::uint32_t g = l.neighbor[k];
       if(g == no_link) continue;
-      const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
-      const std::uint8_t from_edge = static_cast<std::uint8_t>((fresh + 1) % 3);
       Candidate_list& list = candidates[g];
       if(Candidate* seen = find_site(list, site))
       {
         if(seen->from_edge != unreached) continue;
-        seen->from_edge = from_edge;   // its values are the same numbers: the field is one of the vertex
+        seen->from_edge = edge_brought_across(l, k);   // its values are the same numbers: the field is one of the vertex
       }
       else
       {
-        Candidate y(site, {{ 0., 0., 0. }}, from_edge);
-        y.value[a] = x.value[k];
-        y.value[b] = x.value[(k + 1) % 3];
-        y.value[fresh] = m_fields.value(site, l.fresh_vertex[k]);
+        const Candidate y = carried_across(x, l, k);
         if(is_dominated(list, y)) { ++statistics.pruned; continue; }
         list.push_back(y);
       }
@@ -471,27 +466,15 @@ private:
   void forget_offers()
   {
     const std::size_t nf = m_mesh.number_of_faces();
-    decltype(m_epoch)().swap(m_epoch);
-    decltype(m_offers)().swap(m_offers);
-    m_epoch.resize(nf);    // unconstructed, set below
-    m_offers.resize(nf);
-    parallel_for_each_index(nf, m_parallel, [this](std::size_t f) {
-      m_epoch[f] = 0;
-      ::new(static_cast<void*>(&m_offers[f])) Offers();
-    });
+    construct_in_chunks(m_epoch, nf, m_parallel);
+    construct_in_chunks(m_offers, nf, m_parallel);
     m_front.offered.reset(nf / 8 + 16);
     m_offers_complete = true;
   }
 
   // `candidates` becomes an empty list per face, constructed in concurrent chunks with a
   // parallel tag: their threads first touch the array's pages (72 MB at a million faces)
-  void make_empty_lists()
-  {
-    const std::size_t nf = m_mesh.number_of_faces();
-    Candidate_lists().swap(candidates);
-    candidates.resize(nf);   // unconstructed (Candidate_lists' allocator), constructed below
-    parallel_for_each_index(nf, m_parallel, [this](std::size_t f) { ::new(static_cast<void*>(&candidates[f])) Candidate_list(); });
-  }
+  void make_empty_lists() { construct_in_chunks(candidates, m_mesh.number_of_faces(), m_parallel); }
 
   void link_faces()
   {
@@ -586,10 +569,7 @@ private:
   }
 
   // Offers the field of the candidate `from` on face `from_face` across the face's local edge
-  // k: its values at the two shared corners are taken instead of computed again (the same
-  // numbers: the field is a function of the vertex), which spares two of three lookups of a
-  // vertex's coordinates; the edge brought across is the one opposite the corner not shared.
-  // Into another block, the offer goes to the outbox.
+  // k (carried_across()). Into another block, the offer goes to the outbox.
   void offer_across(Front& front, const Candidate& from, std::size_t from_face, int k)
   {
     const Face_link& l = m_links[from_face];
@@ -608,11 +588,29 @@ private:
       return;
     }
     if(!mark_offered(front, from.site, f)) return;
-    Candidate x(from.site, {{ 0., 0., 0. }}, static_cast<std::uint8_t>((fresh + 1) % 3));
+    queue_unless_dominated(front, carried_across(from, l, k), f);
+  }
+
+  // The field of candidate `from` of a face, as brought across its local edge k into the
+  // neighbour there (`l`: the face's links): its values at the two shared corners are taken
+  // instead of computed again (the same numbers: the field is a function of the vertex), which
+  // spares two of three lookups of a vertex's coordinates; the edge brought across is the one
+  // opposite the corner not shared.
+  Candidate carried_across(const Candidate& from, const Face_link& l, int k) const
+  {
+    const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
+    Candidate x(from.site, {{ 0., 0., 0. }}, edge_brought_across(l, k));
     x.value[a] = from.value[k];
     x.value[b] = from.value[(k + 1) % 3];
     x.value[fresh] = m_fields.value(from.site, l.fresh_vertex[k]);
-    queue_unless_dominated(front, x, f);
+    return x;
+  }
+
+  // the local edge of the neighbour across local edge k: the one opposite its corner not shared
+  static std::uint8_t edge_brought_across(const Face_link& l, int k)
+  {
+    const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2;
+    return static_cast<std::uint8_t>((3 - a - b + 1) % 3);
   }
 
   void queue_unless_dominated(Front& front, const Candidate& x, std::size_t f)
@@ -721,7 +719,7 @@ private:
   bool m_parallel;
   std::size_t m_faces_per_block = faces_per_block, m_sites_per_block = sites_per_block;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
-  std::vector<std::uint32_t, Unconstructed_allocator<std::uint32_t> > m_epoch;   // both constructed in forget_offers()
+  std::vector<std::uint32_t, Unconstructed_allocator<std::uint32_t> > m_epoch;   // both built in forget_offers()
   std::vector<Offers, Unconstructed_allocator<Offers> > m_offers;
   bool m_offers_complete = true;    // false after a run in blocks: `m_offers` misses their tables
   Front m_front;                    // the global order's (the first propagation's without blocks, the repair's)
