@@ -40,41 +40,6 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-/// rows of a block of `columns` doubles that fit in about 256 KiB (half a typical L2)
-inline Eigen::Index rows_per_block(Eigen::Index columns)
-{
-  return (std::max<Eigen::Index>)(64, (Eigen::Index(1) << 15) / (std::max<Eigen::Index>)(1, columns + 2));
-}
-
-/// C = A^T X, by blocks of rows. Eigen's product of a tall matrix's transpose with a vector
-/// goes over the vector once per few columns of the matrix, and a vector of a large mesh is
-/// larger than the cache: by blocks of rows, both are read from memory once.
-template <class MatrixA, class MatrixX>
-void transposed_product_by_rows(const MatrixA& A, const MatrixX& X, Eigen::MatrixXd& C)
-{
-  const Eigen::Index rows = A.rows();
-  const Eigen::Index step = rows_per_block(A.cols());
-  C.setZero(A.cols(), X.cols());
-  for(Eigen::Index i = 0; i < rows; i += step)
-  {
-    const Eigen::Index r = (std::min)(step, rows - i);
-    C.noalias() += A.middleRows(i, r).transpose() * X.middleRows(i, r);
-  }
-}
-
-/// Z -= A C, by blocks of rows, for the same reason
-template <class MatrixA, class MatrixZ>
-void subtract_product_by_rows(const MatrixA& A, const Eigen::MatrixXd& C, MatrixZ&& Z)
-{
-  const Eigen::Index rows = A.rows();
-  const Eigen::Index step = rows_per_block(A.cols());
-  for(Eigen::Index i = 0; i < rows; i += step)
-  {
-    const Eigen::Index r = (std::min)(step, rows - i);
-    Z.middleRows(i, r).noalias() -= A.middleRows(i, r) * C;
-  }
-}
-
 struct Block_krylov_schur_result
 {
   Eigen::VectorXd values;    // the largest eigenvalues of the operator, descending
@@ -121,8 +86,8 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
         mass(Z, MZ);
         before = Z.cwiseProduct(MZ).colwise().sum().transpose();
       }
-      transposed_product_by_rows(V.leftCols(q), MZ, C);
-      subtract_product_by_rows(V.leftCols(q), C, Z);
+      C.noalias() = V.leftCols(q).transpose() * MZ;
+      Z.noalias() -= V.leftCols(q) * C;
       coefficients.topRows(q) += C;
       // twice is enough, and once when no column lost half its squared length (the test of
       // Daniel, Gragg, Kaufman and Stewart): what is left is then orthogonal to rounding

@@ -132,19 +132,8 @@ public:
     {
       Eigen::Map<const Eigen::VectorXd> xv(x, n);
       Eigen::Map<Eigen::VectorXd> yv(y, n);
-      if constexpr(supernodal)
-      {
-        // large meshes: by blocks of rows (see block_krylov_schur.h)
-        Eigen::MatrixXd c;
-        transposed_product_by_rows(*m_deflation_vectors, xv, c);
-        c.col(0) = c.col(0).cwiseProduct(m_deflation_weights);
-        subtract_product_by_rows(*m_deflation_vectors, c, yv);
-      }
-      else
-      {
-        const Eigen::VectorXd c = (m_deflation_vectors->transpose() * xv).cwiseProduct(m_deflation_weights);
-        yv.noalias() -= *m_deflation_vectors * c;
-      }
+      const Eigen::VectorXd c = (m_deflation_vectors->transpose() * xv).cwiseProduct(m_deflation_weights);
+      yv.noalias() -= *m_deflation_vectors * c;
     }
   }
 
