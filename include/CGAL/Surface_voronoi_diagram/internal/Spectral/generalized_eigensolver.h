@@ -259,12 +259,12 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
 
 /// The same run by the package's Krylov-Schur iteration (block_krylov_schur.h), for the
 /// supernodal factorization of large meshes: the same operator (deflation included), the same
-/// convergence test, one vector at a time. At igea-537k, d = 10, it converged in 42-46
-/// operator applications where Spectra took 61, and orthogonalizes each new vector with two
-/// passes over the basis where Spectra made up to eleven: its Lanczos 7.4 s -> 5.0-5.2 s.
-/// Blocks of 4 and 8 vectors solve more cheaply per vector (0.046 and 0.034 s against
-/// 0.074 s) but need 88 and 136 applications, and their orthogonalization, matrix products
-/// against a wider basis, cost more than the solves saved.
+/// convergence test, one vector at a time. At igea-537k, d = 10, the two rounds take 53
+/// operator applications where Spectra's took 61, and each new vector is orthogonalized with
+/// one or two passes over the basis where Spectra makes up to six: the embedding 13.8 ->
+/// 12.1 s. Blocks of 4 and 8 vectors solve more cheaply per vector (0.046 and 0.034 s against
+/// 0.074 s) but need 88 and 136 applications in the first round (one vector: 46), and their
+/// orthogonalization, matrix products against a wider basis, cost more than the solves saved.
 template <class Op>
 void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index ncv, double sigma, double tol,
                         Eigen::Index max_iterations, unsigned long seed, bool deflated, Eigen::VectorXd& new_values,
