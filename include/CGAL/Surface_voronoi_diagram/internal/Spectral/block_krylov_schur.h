@@ -74,17 +74,19 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
   // Orthogonalizes Z's columns against V[:, 0:q] (once or twice) and among themselves (Cholesky
   // QR); a column that has nothing left is replaced by a random one. Returns the
   // coefficients of the old Z on V (first q rows) and on the new Z (last b rows).
+  // the squared M norms of X's columns, MX = M X given
+  auto squared_norms = [](const MatrixXd& X, const MatrixXd& MX) -> VectorXd { return X.cwiseProduct(MX).colwise().sum().transpose(); };
   auto orthonormalize = [&](Index q) -> MatrixXd {
     MatrixXd coefficients = MatrixXd::Zero(q + b, b);
     mass(Z, MZ);
-    const VectorXd original = Z.cwiseProduct(MZ).colwise().sum().transpose();   // squared M norms
+    const VectorXd original = squared_norms(Z, MZ);
     VectorXd before = original;
     for(int pass = 0; pass < 2 && q > 0; ++pass)
     {
       if(pass > 0)
       {
         mass(Z, MZ);
-        before = Z.cwiseProduct(MZ).colwise().sum().transpose();
+        before = squared_norms(Z, MZ);
       }
       C.noalias() = V.leftCols(q).transpose() * MZ;
       Z.noalias() -= V.leftCols(q) * C;
@@ -133,8 +135,7 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
         {
           mass(z, mz);
           // measured against the column's length before any orthogonalization when it has one
-          const double before = (recorded && pass == 0) ? std::sqrt((std::max)(0.0, original[j]))
-                                                        : std::sqrt((std::max)(0.0, z.col(0).dot(mz.col(0))));
+          const double length = std::sqrt((std::max)(0.0, (recorded && pass == 0) ? original[j] : squared_norms(z, mz)[0]));
           for(int sweep = 0; sweep < 2; ++sweep)
           {
             if(sweep > 0) mass(z, mz);
@@ -148,8 +149,8 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
             }
           }
           mass(z, mz);
-          const double after = std::sqrt((std::max)(0.0, z.col(0).dot(mz.col(0))));
-          if(before > 0 && after > 1e-10 * before)
+          const double after = std::sqrt((std::max)(0.0, squared_norms(z, mz)[0]));
+          if(length > 0 && after > 1e-10 * length)
           {
             if(recorded) U(j, j) = after;
             z /= after;

@@ -211,6 +211,14 @@ struct Eigen_solve_result
   int rounds = 0;                // Lanczos runs (1 + deflated runs that looked for missed ones)
 };
 
+/// The error of a run that stopped with `converged` of `count` eigenpairs after `restarts`
+inline Numerical_error not_converged(Eigen::Index converged, Eigen::Index count, long restarts)
+{
+  return Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
+                         + std::to_string(count) + " eigenpairs after " + std::to_string(restarts)
+                         + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
+}
+
 /// One Lanczos run by Spectra (the default linear algebra): the `count` smallest eigenpairs,
 /// from Spectra's own start vector in the first round and from a random one after.
 template <class Op>
@@ -248,9 +256,7 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
   r.operations += static_cast<long>(solver.num_operations());
   ++r.rounds;
   if(solver.info() != Spectra::CompInfo::Successful || converged < count)
-    throw Numerical_error("the eigen-solver did not converge: " + std::to_string(converged) + " of "
-                          + std::to_string(count) + " eigenpairs after " + std::to_string(solver.num_iterations())
-                          + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
+    throw not_converged(converged, count, static_cast<long>(solver.num_iterations()));
   new_values = solver.eigenvalues();
   new_vectors = solver.eigenvectors();
   if(!new_values.allFinite() || !new_vectors.allFinite())
@@ -271,24 +277,20 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
                         Eigen::MatrixXd& new_vectors, Eigen_solve_result& r)
 {
   const Eigen::Index n = op.rows();
-  Eigen::VectorXd mx(n);
+  // a column of an Eigen::Ref<const MatrixXd> is contiguous: the products read it in place
   auto mass = [&](const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::MatrixXd& Y) {
     Y.resize(X.rows(), X.cols());
     for(Eigen::Index j = 0; j < X.cols(); ++j)
-    {
-      mx = X.col(j);
-      bop.perform_op(mx.data(), Y.col(j).data());
-    }
+      bop.perform_op(X.col(j).data(), Y.col(j).data());
   };
   // the shift-inverted operator takes M x, as Spectra hands it
+  Eigen::VectorXd mx(n);
   auto apply = [&](const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::MatrixXd& Y) {
     Y.resize(X.rows(), X.cols());
-    Eigen::VectorXd bx(n);
     for(Eigen::Index j = 0; j < X.cols(); ++j)
     {
-      mx = X.col(j);
-      bop.perform_op(mx.data(), bx.data());
-      op.perform_op(bx.data(), Y.col(j).data());
+      bop.perform_op(X.col(j).data(), mx.data());
+      op.perform_op(mx.data(), Y.col(j).data());
     }
   };
   const Eigen::Index basis = (std::max)(ncv, count + 2);
@@ -297,9 +299,7 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
   r.operations += k.applications;
   ++r.rounds;
   if(k.converged < count)
-    throw Numerical_error("the eigen-solver did not converge: " + std::to_string(k.converged) + " of "
-                          + std::to_string(count) + " eigenpairs after " + std::to_string(k.restarts)
-                          + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
+    throw not_converged(k.converged, count, k.restarts);
   if(!k.values.allFinite() || !k.vectors.allFinite())
     throw Numerical_error("the eigen-solver returned non-finite values");
   // lambda = sigma + 1 / theta, ascending. The operator is positive definite but for the
