@@ -5,6 +5,7 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
@@ -247,6 +248,60 @@ TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on an
       CHECK(fingerprint(e) == fingerprint(f));
       CHECK(e.statistics().welded_vertices == f.statistics().welded_vertices);
     }
+  }
+}
+
+// The geodesic metric without its concurrent queries: the diagram propagates in one global order.
+struct Geodesic_one_thread : SV::Geodesic_metric<Mesh>
+{
+  using SV::Geodesic_metric<Mesh>::Geodesic_metric;
+  typedef CGAL::Tag_false Has_concurrent_squared_distance;
+};
+
+TEST_CASE("diagram: the geodesic metric propagates in blocks on any number of threads, to the cells of one global order", "[diagram][parallel][geodesic]")
+{
+  // Threads ask the fronts of the geodesic metric at once (a lock per front), so its diagram
+  // propagates in blocks: the same diagram on 1, 2 and 4 threads, and here the same cells as
+  // the propagation in one order (a thin wall and a torus, 600 sites, blocks of 4096 faces).
+  typedef SV::Geodesic_metric<Mesh> Geodesic;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Geodesic> Sequential;
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Geodesic, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel;
+  std::vector<Mesh> ms(2);
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 12000;
+  GEN::make_thin_lampshade(ms[0], lo);
+  GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
+  for(std::size_t k = 0; k < ms.size(); ++k)
+  {
+    INFO("mesh " << k << ", " << num_faces(ms[k]) << " faces");
+    const auto sites = area_uniform_locations(ms[k], 600, 5);
+    Geodesic metric(ms[k]);
+    const Sequential a(ms[k], metric, sites);
+    CHECK(a.statistics().propagation_blocks >= 4);
+    CHECK(a.statistics().broken_cells == 0);
+    double sum = a.unreached_area();
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      sum += a.cell_area(i);
+      CHECK(a.site_of(sites[i]) == i);
+    }
+    CHECK(sum == Approx(CGAL::to_double(CGAL::Polygon_mesh_processing::area(ms[k]))).epsilon(1e-9));
+    for(int threads : { 1, 2, 4 })
+    {
+      INFO(threads << " threads");
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+      const Parallel b(ms[k], metric, sites);
+      CHECK(fingerprint(a) == fingerprint(b));
+      CHECK(a.statistics().broken_cells_before_repair == b.statistics().broken_cells_before_repair);
+      CHECK(metric.number_of_computed_distances() > 0);
+    }
+    Geodesic_one_thread one_order(ms[k]);
+    const CGAL::Surface_voronoi_diagram<Mesh, Geodesic_one_thread> c(ms[k], one_order, sites);
+    CHECK(c.statistics().propagation_blocks == 1);
+    for(Mesh::Vertex_index v : vertices(ms[k]))
+      CHECK(a.site_of(v) == c.site_of(v));
+    for(std::size_t i = 0; i < sites.size(); ++i)
+      CHECK(a.cell_area(i) == Approx(c.cell_area(i)).epsilon(1e-9));
   }
 }
 #endif

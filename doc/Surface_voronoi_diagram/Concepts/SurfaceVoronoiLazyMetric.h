@@ -25,6 +25,14 @@ compares the values of sites at one vertex (and their linear interpolations insi
 a model may add to all of them a term of the vertex alone, as
 `CGAL::Surface_voronoi::Biharmonic_green_metric` does.
 
+<b>Threads.</b> By default the diagram asks a lazy metric from one thread, even with
+`CGAL::Parallel_tag`. A model whose `squared_distance()` may be called from several threads at
+once, for different sites and for the same one, says so with the optional type
+`Has_concurrent_squared_distance`, `CGAL::Tag_true` (as `CGAL::Surface_voronoi::Geodesic_metric`
+does, with a lock per site): the diagram then propagates in blocks of faces, on every thread of
+a `CGAL::Parallel_tag` diagram, and gives the same cells on any number of threads. The values
+must still not depend on the order of the calls.
+
 <b>Copies.</b> Copies must share no state: a copy is an independent metric that can serve
 another diagram while the original serves one (read-only data such as the mesh may be
 shared, the distances computed for a set of sites may not).
@@ -50,6 +58,10 @@ public:
 
   /// the type of the mesh, a model of `FaceListGraph` whose faces are triangles
   typedef unspecified_type Triangle_mesh;
+
+  /// optional: `CGAL::Tag_true` if threads may call `squared_distance()` at once (see
+  /// <b>Threads</b> above); without it, or with `CGAL::Tag_false`, one thread calls it
+  typedef unspecified_type Has_concurrent_squared_distance;
 
   /// `boost::graph_traits<Triangle_mesh>::vertex_descriptor`
   typedef unspecified_type vertex_descriptor;

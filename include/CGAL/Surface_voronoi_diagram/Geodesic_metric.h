@@ -24,6 +24,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -55,6 +56,11 @@ namespace Surface_voronoi {
 /// Accuracy depends on the resolution: with fewer than about 10 vertices per site the cells
 /// become coarse (see `refine_for_sites()`). Fast marching on triangulated domains follows
 /// Kimmel and Sethian \cgalCite{cgal:ks-cgpm-98}.
+///
+/// Threads may ask for distances at once (`Has_concurrent_squared_distance`): each site's
+/// front has its own lock, and its values do not depend on the order of the queries. A diagram
+/// with `CGAL::Parallel_tag` therefore propagates on all its threads, in the blocks it uses for
+/// embeddings (the same cells on any number of threads).
 ///
 /// <b>One diagram at a time.</b> The fronts are state: `set_sites()` starts them afresh.
 /// A diagram built with the metric calls `set_sites()` in its constructor, asks distances
@@ -90,6 +96,8 @@ public:
             typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type Vertex_point_map;
   /// a point in a face: the face and barycentric coordinates
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
+  /// `CGAL::Tag_true`: threads may ask for distances at once (each front has its own lock)
+  typedef CGAL::Tag_true Has_concurrent_squared_distance;
   /// @}
 
   /// Reads the mesh, which must stay alive while the metric is used; no distance is computed
@@ -188,7 +196,7 @@ public:
   /// done, a small multiple of the number of vertices when the sites are spread out
   std::size_t number_of_computed_distances() const
   {
-    return m_marching ? m_marching->accepted_vertices : 0;
+    return m_marching ? m_marching->accepted_vertices() : 0;
   }
 
   /// \cond SKIP_IN_MANUAL

@@ -81,6 +81,12 @@ public:
 
     Propagation<TriangleMesh, Fields, decltype(is_blocked)> propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked,
                                                                          m_settings.parallel);
+    // A lazy metric's value (a fast-marching front advanced) costs far more than a field's
+    // crossing into another block, and a block's fronts stay in cache: blocks of a quarter the
+    // size (the geodesic metric, igea with 10k sites: propagation 1.21 -> 1.02 s on one thread)
+    if(!std::is_same<Fields, Embedding_values>::value)
+      propagation.set_block_sizes(Propagation<TriangleMesh, Fields, decltype(is_blocked)>::faces_per_block / 4,
+                                  Propagation<TriangleMesh, Fields, decltype(is_blocked)>::sites_per_block);
     if(global_nearest)
       find_global_nearest(propagation.candidates);
     else if(m_settings.previous && std::is_same<Fields, Embedding_values>::value)

@@ -145,6 +145,14 @@ private:
   std::vector<double> m_vertex_coordinates, m_site_coordinates, m_weights;
 };
 
+// Whether a lazy metric's `squared_distance()` may be called from several threads at once:
+// its `Has_concurrent_squared_distance` is `CGAL::Tag_true` (false if it does not say).
+template <class Metric, class = void>
+struct Has_concurrent_squared_distance : std::false_type {};
+template <class Metric>
+struct Has_concurrent_squared_distance<Metric, std::void_t<typename Metric::Has_concurrent_squared_distance> >
+  : std::bool_constant<Metric::Has_concurrent_squared_distance::value> {};
+
 /// A lazy metric during the construction of one diagram: told the sites once, then asked
 /// per (site, vertex).
 template <class TriangleMesh, class Metric>
@@ -153,8 +161,9 @@ class Lazy_values
 public:
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Face_location;
 
-  /// `value()` may fill the metric's caches: one thread at a time
-  static constexpr bool concurrent_values = false;
+  /// `value()` may fill the metric's caches: one thread at a time, unless the metric says
+  /// that threads may ask at once (`Has_concurrent_squared_distance`)
+  static constexpr bool concurrent_values = Has_concurrent_squared_distance<Metric>::value;
 
   Lazy_values(const Indexed_mesh<TriangleMesh>& mesh, Metric& metric, const std::vector<Site>& sites)
     : m_mesh(mesh), m_metric(metric)

@@ -19,6 +19,9 @@
 // advanced, so the values (and the diagram) are the same whatever order the queries come in.
 // Triangles obtuse at the updated vertex also take the update through their split vertex,
 // so that values there are not left to edge paths.
+// Queries may come from several threads: each front has a lock of its own, so threads asking
+// for different sites do not wait for each other, and two asking for one site take turns (the
+// values are the same in any order, see above).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FAST_MARCHING_LOCAL_FAST_MARCHING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FAST_MARCHING_LOCAL_FAST_MARCHING_H
@@ -32,10 +35,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <thread>
 #include <vector>
 
 namespace CGAL {
@@ -58,22 +64,46 @@ public:
 
   explicit Local_fast_marching(const Marching_mesh& mesh) : m_marching(mesh), m_mesh(mesh.mesh()) {}
 
+  /// a copy of the fronts, with locks of its own
+  Local_fast_marching(const Local_fast_marching& other)
+    : m_marching(other.m_marching), m_mesh(other.m_mesh), m_seeds(other.m_seeds), m_fronts(other.m_fronts),
+      m_locks(new Front_lock[other.m_seeds.size()]), m_forgotten_accepted(other.m_forgotten_accepted)
+  {}
+  Local_fast_marching& operator=(const Local_fast_marching&) = delete;
+
   void set_seeds(const std::vector<Marching_seed>& seeds)
   {
     m_seeds = seeds;
     m_fronts.assign(seeds.size(), Front());
-    accepted_vertices = 0;
+    m_locks.reset(new Front_lock[seeds.size()]);
+    m_forgotten_accepted = 0;
   }
 
   std::size_t number_of_seeds() const { return m_seeds.size(); }
 
-  /// Frees every front. A later query marches its site's front again from the seed, which
-  /// gives the same values: a front's sequence of accepted vertices is fixed by the mesh.
-  void forget_fronts() { std::vector<Front>(m_seeds.size()).swap(m_fronts); }
+  /// Frees every front (no query may run meanwhile). A later query marches its site's front
+  /// again from the seed, which gives the same values: a front's sequence of accepted vertices
+  /// is fixed by the mesh.
+  void forget_fronts()
+  {
+    m_forgotten_accepted = accepted_vertices();
+    std::vector<Front>(m_seeds.size()).swap(m_fronts);
+  }
 
-  /// the geodesic distance from site `i` to vertex `v`; +infinity if `v` cannot be reached
+  /// the work done since `set_seeds()`, for the statistics: the vertices accepted by all the
+  /// fronts, forgotten ones included (no query may run meanwhile)
+  std::size_t accepted_vertices() const
+  {
+    std::size_t n = m_forgotten_accepted;
+    for(const Front& front : m_fronts) n += front.accepted;
+    return n;
+  }
+
+  /// the geodesic distance from site `i` to vertex `v`; +infinity if `v` cannot be reached.
+  /// Threads may ask at once.
   double distance(std::size_t i, std::uint32_t v)
   {
+    const Lock_guard guard(m_locks[i]);
     Front& front = m_fronts[i];
     if(const Slot* s = front.values.find(v))
       if(s->accepted()) return s->value();
@@ -108,9 +138,25 @@ public:
     return best;
   }
 
-  std::size_t accepted_vertices = 0;   // work done so far, for the statistics
-
 private:
+  // A spin lock: a front is locked for a few microseconds, and rarely by two threads at once.
+  struct Front_lock
+  {
+    std::atomic<bool> taken{ false };
+  };
+  struct Lock_guard
+  {
+    explicit Lock_guard(Front_lock& l) : lock(l)
+    {
+      while(lock.taken.exchange(true, std::memory_order_acquire))
+        while(lock.taken.load(std::memory_order_relaxed)) std::this_thread::yield();
+    }
+    ~Lock_guard() { lock.taken.store(false, std::memory_order_release); }
+    Lock_guard(const Lock_guard&) = delete;
+    Lock_guard& operator=(const Lock_guard&) = delete;
+    Front_lock& lock;
+  };
+
   // A vertex's value in a front, 12 bytes where a bool beside a double would take 16: the
   // double is kept in two 4-byte words, and negated once the vertex is accepted (values are
   // never negative; the sign bit of 0 is kept as well).
@@ -143,6 +189,7 @@ private:
   struct Front
   {
     bool started = false;
+    std::size_t accepted = 0;   // vertices accepted, for the statistics
     std::vector<Heap_item> heap;
     Flat_hash_table<Slot> values;
 
@@ -193,7 +240,7 @@ private:
       Slot& s = front.find_or_insert(top.vertex);
       if(s.accepted() || top.value != s.value()) continue;   // a stale copy
       s.accept();
-      ++accepted_vertices;
+      ++front.accepted;
       update_around(front, top.vertex, top.value);
       return top.vertex;
     }
@@ -267,6 +314,8 @@ private:
   const Indexed_mesh<TriangleMesh>& m_mesh;
   std::vector<Marching_seed> m_seeds;
   std::vector<Front> m_fronts;
+  std::unique_ptr<Front_lock[]> m_locks;      // one a front
+  std::size_t m_forgotten_accepted = 0;      // by the fronts freed since set_seeds()
 };
 
 } // namespace internal
