@@ -44,6 +44,18 @@ std::vector<Mesh> test_meshes()
   return ms;
 }
 
+// Meshes of several chunks for the parallel loops (which cut 4096 to 8192 faces at a time):
+// a thin lampshade of 12k vertices and a torus of 20k faces.
+std::vector<Mesh> thin_lampshade_and_torus()
+{
+  std::vector<Mesh> ms(2);
+  GEN::Lampshade_options lo;
+  lo.target_vertices = 12000;
+  GEN::make_thin_lampshade(ms[0], lo);
+  GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
+  return ms;
+}
+
 // Bit-level summary of a partition, to compare runs.
 template <class Diagram>
 std::vector<double> fingerprint(const Diagram& vd)
@@ -211,12 +223,10 @@ TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on an
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean> Sequential_euclidean;
   typedef CGAL::Surface_voronoi_diagram<Mesh, Euclidean, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel_euclidean;
   // The last mesh is large enough for the propagation to run in blocks.
-  std::vector<Mesh> ms(4);
-  GEN::Lampshade_options lo;
-  lo.target_vertices = 12000;
-  GEN::make_thin_lampshade(ms[0], lo);
-  GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
+  std::vector<Mesh> ms = thin_lampshade_and_torus();
+  ms.resize(4);
   GEN::make_planar_grid(ms[2], 120, 100, 1.0, 0.8, 0., 0);
+  GEN::Lampshade_options lo;
   lo.target_vertices = 36000;
   GEN::make_thin_lampshade(ms[3], lo);
   for(std::size_t k = 0; k < ms.size(); ++k)
@@ -266,11 +276,7 @@ TEST_CASE("diagram: the geodesic metric propagates in blocks on any number of th
   typedef SV::Geodesic_metric<Mesh> Geodesic;
   typedef CGAL::Surface_voronoi_diagram<Mesh, Geodesic> Sequential;
   typedef CGAL::Surface_voronoi_diagram<Mesh, Geodesic, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> Parallel;
-  std::vector<Mesh> ms(2);
-  GEN::Lampshade_options lo;
-  lo.target_vertices = 12000;
-  GEN::make_thin_lampshade(ms[0], lo);
-  GEN::make_torus(ms[1], 1.0, 0.3, 160, 64);
+  const std::vector<Mesh> ms = thin_lampshade_and_torus();
   for(std::size_t k = 0; k < ms.size(); ++k)
   {
     INFO("mesh " << k << ", " << num_faces(ms[k]) << " faces");
