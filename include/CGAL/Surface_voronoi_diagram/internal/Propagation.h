@@ -100,8 +100,8 @@ public:
     link_faces();
   }
 
-  /// Blocks of other sizes than the defaults (before `run()`), so that tests run small meshes
-  /// in blocks.
+  /// Blocks of other sizes than the defaults (before `run()`): smaller ones for values that
+  /// cost far more than a field's crossing (lazy metrics), and in tests, small meshes in blocks.
   void set_block_sizes(std::size_t faces, std::size_t sites)
   {
     CGAL_precondition(faces > 0 && sites > 0);

@@ -53,6 +53,14 @@ template <class Metric>
 struct Has_forget_distances<Metric, decltype(void(std::declval<Metric&>().forget_distances()))>
   : std::true_type {};
 
+// Whether a lazy metric's `squared_distance()` may be called from several threads at once:
+// its `Has_concurrent_squared_distance` is `CGAL::Tag_true` (false if it does not say).
+template <class Metric, class = void>
+struct Has_concurrent_squared_distance : std::false_type {};
+template <class Metric>
+struct Has_concurrent_squared_distance<Metric, std::void_t<typename Metric::Has_concurrent_squared_distance> >
+  : std::bool_constant<Metric::Has_concurrent_squared_distance::value> {};
+
 // Whether a metric keeps an `Indexed_mesh` of its mesh that the diagram may share.
 template <class Metric, class = void>
 struct Has_indexed_mesh : std::false_type {};
@@ -144,14 +152,6 @@ private:
   const std::vector<Point_d>* m_points = nullptr;   // the mesh's, when they are the coordinates
   std::vector<double> m_vertex_coordinates, m_site_coordinates, m_weights;
 };
-
-// Whether a lazy metric's `squared_distance()` may be called from several threads at once:
-// its `Has_concurrent_squared_distance` is `CGAL::Tag_true` (false if it does not say).
-template <class Metric, class = void>
-struct Has_concurrent_squared_distance : std::false_type {};
-template <class Metric>
-struct Has_concurrent_squared_distance<Metric, std::void_t<typename Metric::Has_concurrent_squared_distance> >
-  : std::bool_constant<Metric::Has_concurrent_squared_distance::value> {};
 
 /// A lazy metric during the construction of one diagram: told the sites once, then asked
 /// per (site, vertex).
