@@ -158,10 +158,12 @@ public:
     for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
       for(std::size_t f = begin; f < end; ++f)
       {
-        if(m_cuts[f].degenerate) tie[c] = 1;
+        const Face_cuts::Cut cut = m_cuts[f];
+        if(cut.degenerate) tie[c] = 1;
         // a face of one candidate keeps its edges whole (see joined_to_parent()): most faces
-        if(m_cuts[f].whole_face) continue;
-        for(std::size_t local = 0; local < pieces_in_face(f); ++local)
+        if(cut.whole_face || m_candidates[f].empty()) continue;
+        const std::size_t pieces = cut.pieces.size();
+        for(std::size_t local = 0; local < pieces; ++local)
           if(!joined_to_parent(f, local))
             breaks_of_chunk[c].push_back(Piece_ref{ f, local });
       }
@@ -221,14 +223,9 @@ private:
                     std::size_t& broken, std::vector<std::pair<std::size_t, std::size_t> >& orphans,
                     std::vector<std::size_t>& regions_of_site) const
   {
-    const std::size_t nf = m_mesh.number_of_faces(), n = sites.size();
+    const std::size_t n = sites.size();
     std::vector<std::vector<Piece_ref> > pieces_of(n);
-    for(std::size_t f = 0; f < nf; ++f)
-      for(std::size_t local = 0; local < pieces_in_face(f); ++local)
-      {
-        const std::uint32_t site = candidate_of(f, local).site;
-        if(which[site]) pieces_of[site].push_back(Piece_ref{ f, local });
-      }
+    for_each_piece_of(which, [&](std::size_t f, std::size_t local, std::uint32_t site) { pieces_of[site].push_back(Piece_ref{ f, local }); });
     std::vector<std::uint8_t> is_broken(n, 0);
     std::vector<std::vector<std::uint8_t> > in_own_region(n);
     for(std::size_t i = 0; i < n; ++i)
@@ -278,15 +275,41 @@ private:
         for(std::size_t j = 0; j < pieces.size(); ++j) in_own_region[i][j] = (region[j] == 0);
       }
     }
-    std::vector<std::size_t> next(n, 0);
-    for(std::size_t f = 0; f < nf; ++f)
-      for(std::size_t local = 0; local < pieces_in_face(f); ++local)
-      {
-        const std::uint32_t site = candidate_of(f, local).site;
-        if(!is_broken[site]) continue;
-        if(!in_own_region[site][next[site]++]) orphans.emplace_back(site, f);
-      }
+    // the broken cells' pieces outside their site's region, in the order of their faces
+    std::vector<std::pair<Piece_ref, std::size_t> > outside;
+    for(std::size_t i = 0; i < n; ++i)
+      if(is_broken[i])
+        for(std::size_t j = 0; j < pieces_of[i].size(); ++j)
+          if(!in_own_region[i][j]) outside.emplace_back(pieces_of[i][j], i);
+    std::sort(outside.begin(), outside.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(const auto& x : outside) orphans.emplace_back(x.second, x.first.face);
     return true;
+  }
+
+  // Calls fn(f, local, site) for every piece of the sites `which` marks, in face order. Most
+  // faces have no such candidate, and their cuts are not read.
+  template <class Fn>
+  void for_each_piece_of(const std::vector<std::uint8_t>& which, const Fn& fn) const
+  {
+    const std::size_t nf = m_mesh.number_of_faces();
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const Candidate_list& list = m_candidates[f];
+      bool any = false;
+      for(const Candidate& c : list) any |= (which[c.site] != 0);
+      if(!any) continue;
+      const Face_cuts::Cut cut = m_cuts[f];
+      if(cut.whole_face)
+      {
+        if(which[list[0].site]) fn(f, std::size_t(0), list[0].site);
+        continue;
+      }
+      for(std::size_t local = 0; local < cut.pieces.size(); ++local)
+      {
+        const std::uint32_t site = list[cut.pieces[local].candidate].site;
+        if(which[site]) fn(f, local, site);
+      }
+    }
   }
 
   // the (site, face) pairs of site i in `m_breakline_site_faces`
