@@ -388,6 +388,11 @@ TEST_CASE("embedding: above the nested-dissection size the supernodal eigen-solv
     const double overlap = std::abs(fast.eigenvectors.col(k).dot(M * reference.eigenvectors.col(k)));
     CHECK(overlap == Approx(1.0).epsilon(1e-8));
   }
+  // the factorization and solves on concurrent threads (Biharmonic_embedding's
+  // ConcurrencyTag): the same eigenpairs bit for bit
+  const SV::internal::Eigen_solve_result threaded = SV::internal::smallest_generalized_eigenpairs(L, M, nev, 1e-10, 1000, std::function<bool()>(), true);
+  CHECK(threaded.eigenvalues == fast.eigenvalues);
+  CHECK(threaded.eigenvectors == fast.eigenvectors);
 }
 #endif
 

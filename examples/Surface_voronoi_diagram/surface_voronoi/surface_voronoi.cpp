@@ -249,6 +249,8 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 
 // the metric of --dimension full, and of auto when its columns fit
 typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
+// the factorization and solves of the eigen-solver on every core (the same bits)
+typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Embedding_metric;
 
 // The metric --metric names on the input mesh (the biharmonic one of the dimension given to
 // build()), built once and shared by the stages that work on that mesh: Lloyd, --valid-dual
@@ -269,7 +271,7 @@ public:
     if(m_args.metric == "biharmonic" && m_args.dimension_full)
       m_full.reset(new Full_spectrum_metric(m_mesh));
     else if(m_args.metric == "biharmonic")
-      m_biharmonic.reset(new CGAL::Biharmonic_embedding<Mesh>(m_mesh, SV::parameters::embedding_dimension(dimension)));
+      m_biharmonic.reset(new Embedding_metric(m_mesh, SV::parameters::embedding_dimension(dimension)));
     else if(m_args.metric == "geodesic")
       m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh));
     else
@@ -297,7 +299,7 @@ private:
   const Arguments& m_args;
   const Mesh& m_mesh;
   std::unique_ptr<Full_spectrum_metric> m_full;
-  std::unique_ptr<CGAL::Biharmonic_embedding<Mesh> > m_biharmonic;
+  std::unique_ptr<Embedding_metric> m_biharmonic;
   std::unique_ptr<SV::Geodesic_metric<Mesh> > m_geodesic;
   std::unique_ptr<SV::Euclidean_embedding<Mesh> > m_euclidean;
   double m_seconds = 0;

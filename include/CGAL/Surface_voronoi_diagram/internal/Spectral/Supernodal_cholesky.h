@@ -32,6 +32,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -39,6 +40,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 #include <vector>
 
@@ -135,6 +137,10 @@ public:
   }
 
   bool ok() const { return m_ok; }
+  /// whether `factor()` factorizes independent subtrees on concurrent threads (the same bits)
+  void set_parallel(bool parallel) { m_parallel = parallel; }
+  /// the subtrees the last `factor()` ran on concurrent threads (0: none)
+  std::size_t number_of_concurrent_subtrees() const { return m_tasks.size(); }
   std::size_t number_of_supernodes() const { return m_first.size() - 1; }
 
   /// x := A^{-1} x
@@ -254,67 +260,151 @@ private:
     }
   }
 
+  // Solves in two sweeps. With the subtrees the factorization ran concurrently, each sweep
+  // runs them concurrently too, every supernode with the same numbers in the same order:
+  // forward, a subtree updates its own rows directly and its updates of the rows above it
+  // (each row's in the order of the supernodes, as one thread makes them) are replayed where
+  // the sequential sweep would have made them; backward, the supernodes above every subtree go
+  // first, and the subtrees then read only those and their own.
   void solve_postordered(double* x) const
   {
     const int ns = static_cast<int>(number_of_supernodes());
     double* t = m_scratch.data();
-    for(int s = 0; s < ns; ++s)   // L y = x
+    if(m_tasks.empty())
     {
-      const int f = m_first[s], k = m_first[s + 1] - f;
-      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
-      const int m = k + r;
-      const double* B = m_values.data() + m_value_begin[s];
-      const int* rows = m_rows.data() + m_row_begin[s];
-      if(k <= small_width)
+      for(int s = 0; s < ns; ++s)   // L y = x
       {
-        // most supernodes are a few columns wide: plain loops, where a call into Eigen's
-        // kernels would cost more than its arithmetic
-        std::fill(t, t + r, 0.0);
-        for(int c = 0; c < k; ++c)
-        {
-          const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
-          const double v = x[f + c] / column[c];
-          x[f + c] = v;
-          for(int a = c + 1; a < k; ++a) x[f + a] -= column[a] * v;
-          for(int q = 0; q < r; ++q) t[q] += column[k + q] * v;
-        }
+        forward_step(s, x, t);
+        const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+        const int* rows = m_rows.data() + m_row_begin[s];
+        for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
       }
-      else
-      {
-        const Block block(B, m, k);
-        Eigen::Map<Eigen::VectorXd> y(x + f, k);
-        block.topRows(k).triangularView<Eigen::Lower>().solveInPlace(y);
-        Eigen::Map<Eigen::VectorXd>(t, r).noalias() = block.bottomRows(r) * y;
-      }
-      for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
+      for(int s = ns - 1; s >= 0; --s) backward_step(s, x, t);   // L^T x = y
+      return;
     }
-    for(int s = ns - 1; s >= 0; --s)   // L^T x = y
+    const std::size_t tasks = m_tasks.size();
+    if(m_task_scratch.size() != tasks) m_task_scratch.assign(tasks, std::vector<double>(static_cast<std::size_t>(m_scratch.size())));
+    if(m_task_log.size() != tasks) m_task_log.assign(tasks, std::vector<double>());
+    for_each_chunk(tasks, 1, true, [&](std::size_t i, std::size_t, std::size_t) {
+      const Task& task = m_tasks[i];
+      double* tt = m_task_scratch[i].data();
+      std::vector<double>& log = m_task_log[i];
+      log.clear();
+      const int end_column = m_first[task.last + 1];
+      for(int s = task.first; s <= task.last; ++s)
+      {
+        forward_step(s, x, tt);
+        const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+        const int* rows = m_rows.data() + m_row_begin[s];
+        int q = 0;
+        for(; q < r && rows[q] < end_column; ++q) x[rows[q]] -= tt[q];
+        if(task.direct)
+          for(; q < r; ++q) x[rows[q]] -= tt[q];
+        else
+          log.insert(log.end(), tt + q, tt + r);
+      }
+    });
+    std::size_t next_task = 0;
+    for(int s = 0; s < ns;)
     {
-      const int f = m_first[s], k = m_first[s + 1] - f;
-      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
-      const int m = k + r;
-      const double* B = m_values.data() + m_value_begin[s];
-      const int* rows = m_rows.data() + m_row_begin[s];
-      for(int q = 0; q < r; ++q) t[q] = x[rows[q]];
-      if(k <= small_width)
+      if(next_task < tasks && s == m_tasks[next_task].first)
       {
-        for(int c = k - 1; c >= 0; --c)
+        const Task& task = m_tasks[next_task];
+        if(!task.direct)
         {
-          const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
-          double v = x[f + c];
-          for(int q = 0; q < r; ++q) v -= column[k + q] * t[q];
-          for(int a = c + 1; a < k; ++a) v -= column[a] * x[f + a];
-          x[f + c] = v / column[c];
+          const int end_column = m_first[task.last + 1];
+          const double* log = m_task_log[next_task].data();
+          for(int u = task.first; u <= task.last; ++u)
+          {
+            const int* rows = m_rows.data() + m_row_begin[u];
+            const int* past = rows + (m_row_begin[u + 1] - m_row_begin[u]);
+            for(const int* row = std::lower_bound(rows, past, end_column); row != past; ++row) x[*row] -= *log++;
+          }
         }
+        s = task.last + 1;
+        ++next_task;
+        continue;
       }
-      else
+      forward_step(s, x, t);
+      const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+      const int* rows = m_rows.data() + m_row_begin[s];
+      for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
+      ++s;
+    }
+    std::size_t task_above = tasks;   // the tasks are in increasing order: walk them down
+    for(int s = ns - 1; s >= 0; --s)
+    {
+      if(task_above > 0 && s == m_tasks[task_above - 1].last)
       {
-        const Block block(B, m, k);
-        Eigen::Map<Eigen::VectorXd> y(x + f, k);
-        if(r > 0)
-          y.noalias() -= block.bottomRows(r).transpose() * Eigen::Map<const Eigen::VectorXd>(t, r);
-        block.topRows(k).triangularView<Eigen::Lower>().transpose().solveInPlace(y);
+        s = m_tasks[--task_above].first;
+        continue;
       }
+      backward_step(s, x, t);
+    }
+    for_each_chunk(tasks, 1, true, [&](std::size_t i, std::size_t, std::size_t) {
+      double* tt = m_task_scratch[i].data();
+      for(int s = m_tasks[i].last; s >= m_tasks[i].first; --s) backward_step(s, x, tt);
+    });
+  }
+
+  // Supernode s's part of L y = x: its columns of y, in place, and in `t` what they take
+  // off the rows below (not yet taken off).
+  void forward_step(int s, double* x, double* t) const
+  {
+    const int f = m_first[s], k = m_first[s + 1] - f;
+    const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+    const int m = k + r;
+    const double* B = m_values.data() + m_value_begin[s];
+    if(k <= small_width)
+    {
+      // most supernodes are a few columns wide: plain loops, where a call into Eigen's
+      // kernels would cost more than its arithmetic
+      std::fill(t, t + r, 0.0);
+      for(int c = 0; c < k; ++c)
+      {
+        const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+        const double v = x[f + c] / column[c];
+        x[f + c] = v;
+        for(int a = c + 1; a < k; ++a) x[f + a] -= column[a] * v;
+        for(int q = 0; q < r; ++q) t[q] += column[k + q] * v;
+      }
+    }
+    else
+    {
+      const Block block(B, m, k);
+      Eigen::Map<Eigen::VectorXd> y(x + f, k);
+      block.topRows(k).triangularView<Eigen::Lower>().solveInPlace(y);
+      Eigen::Map<Eigen::VectorXd>(t, r).noalias() = block.bottomRows(r) * y;
+    }
+  }
+
+  // Supernode s's part of L^T x = y, from the rows below it, already solved; `t` is scratch.
+  void backward_step(int s, double* x, double* t) const
+  {
+    const int f = m_first[s], k = m_first[s + 1] - f;
+    const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
+    const int m = k + r;
+    const double* B = m_values.data() + m_value_begin[s];
+    const int* rows = m_rows.data() + m_row_begin[s];
+    for(int q = 0; q < r; ++q) t[q] = x[rows[q]];
+    if(k <= small_width)
+    {
+      for(int c = k - 1; c >= 0; --c)
+      {
+        const double* column = B + static_cast<std::ptrdiff_t>(c) * m;
+        double v = x[f + c];
+        for(int q = 0; q < r; ++q) v -= column[k + q] * t[q];
+        for(int a = c + 1; a < k; ++a) v -= column[a] * x[f + a];
+        x[f + c] = v / column[c];
+      }
+    }
+    else
+    {
+      const Block block(B, m, k);
+      Eigen::Map<Eigen::VectorXd> y(x + f, k);
+      if(r > 0)
+        y.noalias() -= block.bottomRows(r).transpose() * Eigen::Map<const Eigen::VectorXd>(t, r);
+      block.topRows(k).triangularView<Eigen::Lower>().transpose().solveInPlace(y);
     }
   }
 
@@ -484,56 +574,166 @@ private:
     m_relative.assign(static_cast<std::size_t>(n), 0);
   }
 
-  // Multifrontal: each supernode's front gathers its columns of A and its children's update
-  // matrices (kept on a stack: in a postorder they are the last pushed), is partly factorized
-  // as a dense block, and leaves its own update matrix for its parent.
-  bool factorize(const Sparse_matrix& A)
+  // What one thread's factorization works with: the update matrices waiting for their
+  // parents (a stack: in a postorder the children's are the last pushed), a front, and each
+  // matrix row's row in the current front.
+  struct Front_workspace
   {
-    const int ns = static_cast<int>(number_of_supernodes());
-    m_values.assign(m_value_begin.back(), 0.0);
     std::vector<double> stack;            // update matrices, column-major, one after the other
     std::vector<std::size_t> stack_begin;
     std::vector<int> stack_owner;
     std::vector<double> buffer;
-    std::size_t widest = 0, largest = 0;
+    std::vector<int> relative;
+  };
+
+  std::size_t front_rows(int s) const
+  {
+    return static_cast<std::size_t>(m_first[s + 1] - m_first[s]) + (m_row_begin[s + 1] - m_row_begin[s]);
+  }
+
+  // Multifrontal: each supernode's front gathers its columns of A and its children's update
+  // matrices, is partly factorized as a dense block, and leaves its own update matrix for its
+  // parent. With `m_parallel`, the subtrees below the first branching of the tree are
+  // factorized on concurrent threads, each with its own workspace, and the rest in postorder
+  // after them, each subtree's update matrix put on the stack where its root would have
+  // pushed it: every front is assembled and factorized with the same numbers in the same
+  // order, so the factor is the same bits on any number of threads.
+  bool factorize(const Sparse_matrix& A)
+  {
+    const int ns = static_cast<int>(number_of_supernodes());
+    m_values.assign(m_value_begin.back(), 0.0);
+    std::size_t widest = 0;
+    for(int s = 0; s < ns; ++s)
+      widest = (std::max)(widest, m_row_begin[s + 1] - m_row_begin[s]);
+    m_scratch.resize(static_cast<Eigen::Index>(widest));
+
+    std::vector<int> subtree_size(static_cast<std::size_t>(ns), 1);
+    for(int s = 0; s < ns; ++s)
+      if(m_parent[s] >= 0) subtree_size[m_parent[s]] += subtree_size[s];
+    const std::vector<int> roots = m_parallel ? concurrent_subtrees(subtree_size) : std::vector<int>();
+    m_tasks.clear();
+    m_task_scratch.clear();
+    m_task_log.clear();
+    for(int root : roots)
+    {
+      const int first = root - subtree_size[root] + 1;
+      m_tasks.push_back(Task{ first, root, first == 0 && m_tasks.empty() });
+    }
+    std::vector<Front_workspace> done(roots.size());
+    std::vector<std::uint8_t> ok(roots.size(), 0);
+    std::vector<int> done_at(roots.empty() ? std::size_t(0) : static_cast<std::size_t>(ns), -1);   // a subtree's first supernode
+    for(std::size_t t = 0; t < roots.size(); ++t) done_at[roots[t] - subtree_size[roots[t]] + 1] = static_cast<int>(t);
+    for_each_chunk(roots.size(), 1, true, [&](std::size_t t, std::size_t, std::size_t) {
+      done[t].relative.resize(m_relative.size());
+      ok[t] = factorize_supernodes(A, roots[t] - subtree_size[roots[t]] + 1, roots[t] + 1, done[t]);
+    });
+    if(std::find(ok.begin(), ok.end(), std::uint8_t(0)) != ok.end())
+      return false;
+
+    Front_workspace main;
+    main.relative.swap(m_relative);
+    bool good = true;
+    for(int s = 0; s < ns && good;)
+    {
+      if(!done_at.empty() && done_at[s] >= 0)
+      {
+        // the subtree's root update, the only matrix left on its stack
+        Front_workspace& w = done[static_cast<std::size_t>(done_at[s])];
+        CGAL_assertion(w.stack_owner.size() == 1 && w.stack_begin.front() == 0);
+        main.stack_begin.push_back(main.stack.size());
+        main.stack_owner.push_back(w.stack_owner.front());
+        main.stack.insert(main.stack.end(), w.stack.begin(), w.stack.end());
+        s = w.stack_owner.front() + 1;
+        Front_workspace().stack.swap(w.stack);
+        continue;
+      }
+      good = factorize_supernodes(A, s, s + 1, main);
+      ++s;
+    }
+    main.relative.swap(m_relative);
+    CGAL_assertion(!good || main.stack.empty());
+    return good;
+  }
+
+  // The roots of the subtrees to factorize concurrently: the children of the first supernode,
+  // from the top of the heaviest tree, whose second-heaviest child holds a tenth of its work
+  // (the nested-dissection ordering's first separator). None if there is no such branching.
+  std::vector<int> concurrent_subtrees(const std::vector<int>& subtree_size) const
+  {
+    const int ns = static_cast<int>(number_of_supernodes());
+    std::vector<double> work(static_cast<std::size_t>(ns), 0.);
+    std::vector<std::vector<int> > children(static_cast<std::size_t>(ns));
+    int top = -1;
     for(int s = 0; s < ns; ++s)
     {
-      const std::size_t m = static_cast<std::size_t>(m_first[s + 1] - m_first[s]) + (m_row_begin[s + 1] - m_row_begin[s]);
-      largest = (std::max)(largest, m * m);
+      const double k = double(m_first[s + 1] - m_first[s]), m = double(front_rows(s));
+      work[s] += k * m * m;
+      if(m_parent[s] >= 0)
+      {
+        work[m_parent[s]] += work[s];
+        children[m_parent[s]].push_back(s);
+      }
+      else if(top < 0 || work[s] > work[top])
+        top = s;
     }
-    buffer.resize(largest);
-    for(int s = 0; s < ns; ++s)
+    for(int node = top; node >= 0;)
+    {
+      const std::vector<int>& c = children[node];
+      if(c.empty()) break;
+      std::vector<int> by_work(c);
+      std::sort(by_work.begin(), by_work.end(), [&](int a, int b) { return work[a] > work[b] || (work[a] == work[b] && a < b); });
+      if(by_work.size() >= 2 && work[by_work[1]] >= 0.1 * work[node])
+      {
+        // sizable subtrees only: a thread's start costs more than a small one's factorization
+        std::vector<int> roots;
+        for(int r : c)
+          if(subtree_size[r] > 1) roots.push_back(r);
+        return roots;
+      }
+      node = by_work.front();
+    }
+    return std::vector<int>();
+  }
+
+  // Factorizes supernodes [first, last) in order, with `w`'s stack: a whole subtree, or the
+  // next supernode of the postorder.
+  bool factorize_supernodes(const Sparse_matrix& A, int first, int last, Front_workspace& w)
+  {
+    std::size_t largest = 0;
+    for(int s = first; s < last; ++s) largest = (std::max)(largest, front_rows(s) * front_rows(s));
+    if(w.buffer.size() < largest) w.buffer.resize(largest);
+    std::vector<int>& relative = w.relative;
+    for(int s = first; s < last; ++s)
     {
       const int f = m_first[s], k = m_first[s + 1] - f;
       const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
       const int m = k + r;
       const int* rows = m_rows.data() + m_row_begin[s];
-      widest = (std::max)(widest, static_cast<std::size_t>(r));
-      for(int t = 0; t < k; ++t) m_relative[f + t] = t;
-      for(int q = 0; q < r; ++q) m_relative[rows[q]] = k + q;
-      Eigen::Map<Eigen::MatrixXd> front(buffer.data(), m, m);
+      for(int t = 0; t < k; ++t) relative[f + t] = t;
+      for(int q = 0; q < r; ++q) relative[rows[q]] = k + q;
+      Eigen::Map<Eigen::MatrixXd> front(w.buffer.data(), m, m);
       front.setZero();
       for(int j = f; j < f + k; ++j)
         for(Sparse_matrix::InnerIterator it(A, j); it; ++it)
           if(it.row() >= j)
-            front(m_relative[it.row()], j - f) += it.value();
+            front(relative[it.row()], j - f) += it.value();
       for(int c = 0; c < m_child_count[s]; ++c)
       {
-        CGAL_assertion(!stack_owner.empty() && m_parent[stack_owner.back()] == s);
-        const int child = stack_owner.back();
+        CGAL_assertion(!w.stack_owner.empty() && m_parent[w.stack_owner.back()] == s);
+        const int child = w.stack_owner.back();
         const int rc = static_cast<int>(m_row_begin[child + 1] - m_row_begin[child]);
         const int* crows = m_rows.data() + m_row_begin[child];
-        const double* U = stack.data() + stack_begin.back();
+        const double* U = w.stack.data() + w.stack_begin.back();
         for(int b = 0; b < rc; ++b)
         {
-          const int cb = m_relative[crows[b]];
+          const int cb = relative[crows[b]];
           double* column = front.data() + static_cast<std::ptrdiff_t>(cb) * m;
           const double* source = U + static_cast<std::ptrdiff_t>(b) * rc;
-          for(int a = b; a < rc; ++a) column[m_relative[crows[a]]] += source[a];
+          for(int a = b; a < rc; ++a) column[relative[crows[a]]] += source[a];
         }
-        stack.resize(stack_begin.back());
-        stack_begin.pop_back();
-        stack_owner.pop_back();
+        w.stack.resize(w.stack_begin.back());
+        w.stack_begin.pop_back();
+        w.stack_owner.pop_back();
       }
       auto F11 = front.topLeftCorner(k, k);
       Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(F11);
@@ -545,17 +745,15 @@ private:
         F11.triangularView<Eigen::Lower>().transpose().solveInPlace<Eigen::OnTheRight>(F21);
         auto F22 = front.bottomRightCorner(r, r);
         F22.selfadjointView<Eigen::Lower>().rankUpdate(F21, -1.0);
-        stack_begin.push_back(stack.size());
-        stack_owner.push_back(s);
-        stack.resize(stack.size() + static_cast<std::size_t>(r) * static_cast<std::size_t>(r));
-        Eigen::Map<Eigen::MatrixXd>(stack.data() + stack_begin.back(), r, r).triangularView<Eigen::Lower>() = F22.triangularView<Eigen::Lower>();
+        w.stack_begin.push_back(w.stack.size());
+        w.stack_owner.push_back(s);
+        w.stack.resize(w.stack.size() + static_cast<std::size_t>(r) * static_cast<std::size_t>(r));
+        Eigen::Map<Eigen::MatrixXd>(w.stack.data() + w.stack_begin.back(), r, r).triangularView<Eigen::Lower>() = F22.triangularView<Eigen::Lower>();
       }
       Eigen::Map<Eigen::MatrixXd>(m_values.data() + m_value_begin[s], m, k) = front.leftCols(k);
       if(!front.leftCols(k).allFinite())
         return false;
     }
-    CGAL_assertion(stack.empty());
-    m_scratch.resize(static_cast<Eigen::Index>(widest));
     return true;
   }
 
@@ -568,6 +766,13 @@ private:
   std::vector<int> m_relative;             // a front's row of each matrix row, while factorizing
   mutable Eigen::VectorXd m_scratch;
   std::vector<int> m_permutation;          // empty, or the postorder the factor is in
+  bool m_parallel = false;
+  // the subtrees factorized, and solved, concurrently: supernodes first .. last, in
+  // increasing order; `direct`: the first of the postorder, whose updates of the rows above
+  // it come before any other's and are made in place
+  struct Task { int first, last; bool direct; };
+  std::vector<Task> m_tasks;
+  mutable std::vector<std::vector<double> > m_task_scratch, m_task_log;
   mutable Eigen::VectorXd m_permuted;
   bool m_ok = false;
 };
@@ -606,6 +811,8 @@ public:
   }
 
   const Supernodal_cholesky& factorization() const { return m_cholesky; }
+  /// see `Supernodal_cholesky::set_parallel()`
+  void set_parallel(bool parallel) { m_cholesky.set_parallel(parallel); }
 
 private:
   Supernodal_cholesky m_cholesky;

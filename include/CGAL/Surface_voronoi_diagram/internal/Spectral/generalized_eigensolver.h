@@ -68,12 +68,19 @@ class Shift_invert_operator
 public:
   typedef double Scalar;
 
+  /// `parallel`: the package's supernodal factorization runs its independent subtrees on
+  /// concurrent threads (the same bits); other models ignore it
   Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B,
-                        const std::function<bool()>& keep_going)
+                        const std::function<bool()>& keep_going, bool parallel = false)
     : m_A(A), m_B(B), m_keep_going(keep_going), m_matrix(static_cast<int>(A.rows())),
       m_x(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows())),
       m_y(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows()))
-  {}
+  {
+    if constexpr(supernodal)
+      m_la.set_parallel(parallel);
+    else
+      CGAL_USE(parallel);
+  }
 
   Eigen::Index rows() const { return m_A.rows(); }
   Eigen::Index cols() const { return m_A.cols(); }
@@ -329,7 +336,8 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
                                                             Eigen::Index nev,
                                                             double tolerance,
                                                             Eigen::Index max_iterations,
-                                                            const std::function<bool()>& keep_going)
+                                                            const std::function<bool()>& keep_going,
+                                                            bool parallel = false)
 {
   const Eigen::Index n = L.rows();
   CGAL_precondition_msg(nev >= 1 && nev < n, "more vertices than eigenpairs are needed");
@@ -343,7 +351,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   typedef Shift_invert_operator<LA> Op;
   typedef Mass_product BOp;
   // on the heap, to free the factorization before the result is put together
-  std::unique_ptr<Op> op(new Op(L, M, keep_going));
+  std::unique_ptr<Op> op(new Op(L, M, keep_going, parallel));
   BOp bop(M);
   op->set_shift(sigma);
 
@@ -453,7 +461,8 @@ Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L
                                                    Eigen::Index nev,
                                                    double tolerance = 1e-10,
                                                    Eigen::Index max_iterations = 1000,
-                                                   const std::function<bool()>& keep_going = std::function<bool()>())
+                                                   const std::function<bool()>& keep_going = std::function<bool()>(),
+                                                   bool parallel = false)
 {
 #ifdef CGAL_USE_METIS
   typedef Nested_dissection_ordering<int> Ordering;
@@ -472,12 +481,12 @@ Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L
     Eigen::SparseMatrix<double>().swap(L);   // not needed any more (45 MB at 537k vertices)
     Eigen::SparseMatrix<double>().swap(M);
     Eigen_solve_result r = smallest_generalized_eigenpairs_in_order<Supernodal_cholesky_traits>(renumbered_L, renumbered_M, nev, tolerance,
-                                                                                                 max_iterations, keep_going);
+                                                                                                 max_iterations, keep_going, parallel);
     r.eigenvectors = eliminated * r.eigenvectors;   // row k goes back to row eliminated[k]
     return r;
   }
 #endif
-  return smallest_generalized_eigenpairs_in_order<LA>(L, M, nev, tolerance, max_iterations, keep_going);
+  return smallest_generalized_eigenpairs_in_order<LA>(L, M, nev, tolerance, max_iterations, keep_going, parallel);
 }
 
 } // namespace internal
