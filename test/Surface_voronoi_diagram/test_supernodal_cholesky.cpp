@@ -64,6 +64,24 @@ Sparse random_spd(int n, int coupling, int block, unsigned seed)
   return A;
 }
 
+// A torus's cotangent Laplacian shifted as the eigen-solver shifts it, renumbered by AMD and
+// then in a postorder
+Sparse shifted_torus_laplacian(int around, int across)
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, around, across);
+  SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
+  Sparse L, M;
+  SV::internal::assemble_cotangent_laplacian(im.points, im.triangles, L, M);
+  const double sigma = -1e-6 * L.diagonal().mean() / M.diagonal().mean();
+  const Sparse C = L - sigma * M;
+  Eigen::AMDOrdering<int>::PermutationType p;
+  Eigen::AMDOrdering<int>()(C, p);
+  Sparse amd_ordered;
+  amd_ordered = C.selfadjointView<Eigen::Lower>().twistedBy(p.inverse());
+  return postordered(amd_ordered);
+}
+
 void check_solves(const Sparse& A)
 {
   Cholesky cholesky;
@@ -92,18 +110,7 @@ TEST_CASE("supernodal Cholesky: solves agree with Eigen's simplicial LLT", "[emb
 {
   SECTION("a mesh Laplacian shifted as the eigen-solver shifts it")
   {
-    Mesh m;
-    GEN::make_torus(m, 1.0, 0.35, 60, 24);
-    SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
-    Sparse L, M;
-    SV::internal::assemble_cotangent_laplacian(im.points, im.triangles, L, M);
-    const double sigma = -1e-6 * L.diagonal().mean() / M.diagonal().mean();
-    Eigen::SparseMatrix<double> amd_ordered;
-    Eigen::AMDOrdering<int>::PermutationType p;
-    const Sparse C = L - sigma * M;
-    Eigen::AMDOrdering<int>()(C, p);
-    amd_ordered = C.selfadjointView<Eigen::Lower>().twistedBy(p.inverse());
-    check_solves(postordered(amd_ordered));
+    check_solves(shifted_torus_laplacian(60, 24));
   }
   SECTION("random patterns with a block wider than the loops take")
   {
@@ -150,19 +157,9 @@ void check_concurrent_bits(const Sparse& A, bool expect_subtrees)
 
 TEST_CASE("supernodal Cholesky: on concurrent threads, the same bits", "[embedding][numerics]")
 {
-  SECTION("a mesh Laplacian in a nested-dissection-like ordering: two halves and a separator")
+  SECTION("a mesh Laplacian, whose elimination tree branches into sizable subtrees")
   {
-    Mesh m;
-    GEN::make_torus(m, 1.0, 0.35, 120, 48);
-    SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
-    Sparse L, M;
-    SV::internal::assemble_cotangent_laplacian(im.points, im.triangles, L, M);
-    const Sparse C = L - (-1e-6 * L.diagonal().mean() / M.diagonal().mean()) * M;
-    Eigen::AMDOrdering<int>::PermutationType p;
-    Eigen::AMDOrdering<int>()(C, p);
-    Sparse ordered;
-    ordered = C.selfadjointView<Eigen::Lower>().twistedBy(p.inverse());
-    check_concurrent_bits(postordered(ordered), true);
+    check_concurrent_bits(shifted_torus_laplacian(120, 48), true);
   }
   SECTION("random patterns, a forest, one row")
   {
