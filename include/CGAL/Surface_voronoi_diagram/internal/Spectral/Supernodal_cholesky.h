@@ -270,21 +270,10 @@ private:
   {
     const int ns = static_cast<int>(number_of_supernodes());
     double* t = m_scratch.data();
-    if(m_tasks.empty())
-    {
-      for(int s = 0; s < ns; ++s)   // L y = x
-      {
-        forward_step(s, x, t);
-        const int r = static_cast<int>(m_row_begin[s + 1] - m_row_begin[s]);
-        const int* rows = m_rows.data() + m_row_begin[s];
-        for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
-      }
-      for(int s = ns - 1; s >= 0; --s) backward_step(s, x, t);   // L^T x = y
-      return;
-    }
     const std::size_t tasks = m_tasks.size();
     if(m_task_scratch.size() != tasks) m_task_scratch.assign(tasks, std::vector<double>(static_cast<std::size_t>(m_scratch.size())));
     if(m_task_log.size() != tasks) m_task_log.assign(tasks, std::vector<double>());
+    // L y = x
     for_each_chunk(tasks, 1, true, [&](std::size_t i, std::size_t, std::size_t) {
       const Task& task = m_tasks[i];
       double* tt = m_task_scratch[i].data();
@@ -331,7 +320,8 @@ private:
       for(int q = 0; q < r; ++q) x[rows[q]] -= t[q];
       ++s;
     }
-    std::size_t task_above = tasks;   // the tasks are in increasing order: walk them down
+    // L^T x = y; the tasks are in increasing order: walk them down
+    std::size_t task_above = tasks;
     for(int s = ns - 1; s >= 0; --s)
     {
       if(task_above > 0 && s == m_tasks[task_above - 1].last)
@@ -610,45 +600,41 @@ private:
     std::vector<int> subtree_size(static_cast<std::size_t>(ns), 1);
     for(int s = 0; s < ns; ++s)
       if(m_parent[s] >= 0) subtree_size[m_parent[s]] += subtree_size[s];
-    const std::vector<int> roots = m_parallel ? concurrent_subtrees(subtree_size) : std::vector<int>();
     m_tasks.clear();
     m_task_scratch.clear();
     m_task_log.clear();
-    for(int root : roots)
-    {
-      const int first = root - subtree_size[root] + 1;
-      m_tasks.push_back(Task{ first, root, first == 0 && m_tasks.empty() });
-    }
-    std::vector<Front_workspace> done(roots.size());
-    std::vector<std::uint8_t> ok(roots.size(), 0);
-    std::vector<int> done_at(roots.empty() ? std::size_t(0) : static_cast<std::size_t>(ns), -1);   // a subtree's first supernode
-    for(std::size_t t = 0; t < roots.size(); ++t) done_at[roots[t] - subtree_size[roots[t]] + 1] = static_cast<int>(t);
-    for_each_chunk(roots.size(), 1, true, [&](std::size_t t, std::size_t, std::size_t) {
+    if(m_parallel)
+      for(int root : concurrent_subtrees(subtree_size))
+      {
+        const int first = root - subtree_size[root] + 1;
+        m_tasks.push_back(Task{ first, root, first == 0 && m_tasks.empty() });
+      }
+    std::vector<Front_workspace> done(m_tasks.size());
+    std::vector<std::uint8_t> ok(m_tasks.size(), 0);
+    for_each_chunk(m_tasks.size(), 1, true, [&](std::size_t t, std::size_t, std::size_t) {
       done[t].relative.resize(m_relative.size());
-      ok[t] = factorize_supernodes(A, roots[t] - subtree_size[roots[t]] + 1, roots[t] + 1, done[t]);
+      ok[t] = factorize_supernodes(A, m_tasks[t].first, m_tasks[t].last + 1, done[t]);
     });
     if(std::find(ok.begin(), ok.end(), std::uint8_t(0)) != ok.end())
       return false;
 
+    // the supernodes before each subtree, then the subtree's root update, the only matrix
+    // left on its stack; then those after the last
     Front_workspace main;
     main.relative.swap(m_relative);
     bool good = true;
-    for(int s = 0; s < ns && good;)
+    int s = 0;
+    for(std::size_t t = 0; good; ++t)
     {
-      if(!done_at.empty() && done_at[s] >= 0)
-      {
-        // the subtree's root update, the only matrix left on its stack
-        Front_workspace& w = done[static_cast<std::size_t>(done_at[s])];
-        CGAL_assertion(w.stack_owner.size() == 1 && w.stack_begin.front() == 0);
-        main.stack_begin.push_back(main.stack.size());
-        main.stack_owner.push_back(w.stack_owner.front());
-        main.stack.insert(main.stack.end(), w.stack.begin(), w.stack.end());
-        s = w.stack_owner.front() + 1;
-        Front_workspace().stack.swap(w.stack);
-        continue;
-      }
-      good = factorize_supernodes(A, s, s + 1, main);
-      ++s;
+      good = factorize_supernodes(A, s, t < m_tasks.size() ? m_tasks[t].first : ns, main);
+      if(t == m_tasks.size()) break;
+      Front_workspace& w = done[t];
+      CGAL_assertion(w.stack_owner.size() == 1 && w.stack_owner.front() == m_tasks[t].last && w.stack_begin.front() == 0);
+      main.stack_begin.push_back(main.stack.size());
+      main.stack_owner.push_back(m_tasks[t].last);
+      main.stack.insert(main.stack.end(), w.stack.begin(), w.stack.end());
+      std::vector<double>().swap(w.stack);
+      s = m_tasks[t].last + 1;
     }
     main.relative.swap(m_relative);
     CGAL_assertion(!good || main.stack.empty());
