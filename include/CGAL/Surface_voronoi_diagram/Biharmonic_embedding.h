@@ -361,7 +361,11 @@ private:
       return;
     }
     timer.stop("solve");
-    if(times) times->counts["eigen_operations"] += double(r.operations);
+    if(times)
+    {
+      times->counts["eigen_operations"] += double(r.operations);
+      times->counts["concurrent_subtrees"] += double(r.concurrent_subtrees);
+    }
 
     m_all_eigenvalues = r.eigenvalues;
     const double lambda_first = r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes)];

@@ -85,6 +85,15 @@ public:
   Eigen::Index rows() const { return m_A.rows(); }
   Eigen::Index cols() const { return m_A.cols(); }
 
+  /// the subtrees the factorization ran on concurrent threads (0: one thread, or another model)
+  std::size_t concurrent_subtrees() const
+  {
+    if constexpr(supernodal)
+      return m_la.factorization().number_of_concurrent_subtrees();
+    else
+      return 0;
+  }
+
   void set_shift(const Scalar& sigma)
   {
     if(m_factorized && sigma == m_sigma)
@@ -216,6 +225,7 @@ struct Eigen_solve_result
   long iterations = 0;
   long operations = 0;
   int rounds = 0;                // Lanczos runs (1 + deflated runs that looked for missed ones)
+  std::size_t concurrent_subtrees = 0;   // the supernodal factorization's subtrees run on concurrent threads
 };
 
 /// The error of a run that stopped with `converged` of `count` eigenpairs after `restarts`
@@ -356,6 +366,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   op->set_shift(sigma);
 
   Eigen_solve_result r;
+  r.concurrent_subtrees = op->concurrent_subtrees();
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors(n, 0);
   const int max_rounds = 8;
