@@ -597,18 +597,21 @@ private:
       widest = (std::max)(widest, m_row_begin[s + 1] - m_row_begin[s]);
     m_scratch.resize(static_cast<Eigen::Index>(widest));
 
-    std::vector<int> subtree_size(static_cast<std::size_t>(ns), 1);
-    for(int s = 0; s < ns; ++s)
-      if(m_parent[s] >= 0) subtree_size[m_parent[s]] += subtree_size[s];
     m_tasks.clear();
     m_task_scratch.clear();
     m_task_log.clear();
     if(m_parallel)
+    {
+      // in a postorder, the subtree of s is the supernodes s - subtree_size[s] + 1 .. s
+      std::vector<int> subtree_size(static_cast<std::size_t>(ns), 1);
+      for(int s = 0; s < ns; ++s)
+        if(m_parent[s] >= 0) subtree_size[m_parent[s]] += subtree_size[s];
       for(int root : concurrent_subtrees(subtree_size))
       {
         const int first = root - subtree_size[root] + 1;
         m_tasks.push_back(Task{ first, root, first == 0 && m_tasks.empty() });
       }
+    }
     std::vector<Front_workspace> done(m_tasks.size());
     std::vector<std::uint8_t> ok(m_tasks.size(), 0);
     for_each_chunk(m_tasks.size(), 1, true, [&](std::size_t t, std::size_t, std::size_t) {
@@ -648,23 +651,26 @@ private:
   {
     const int ns = static_cast<int>(number_of_supernodes());
     std::vector<double> work(static_cast<std::size_t>(ns), 0.);
-    std::vector<std::vector<int> > children(static_cast<std::size_t>(ns));
     int top = -1;
     for(int s = 0; s < ns; ++s)
     {
       const double k = double(m_first[s + 1] - m_first[s]), m = double(front_rows(s));
       work[s] += k * m * m;
       if(m_parent[s] >= 0)
-      {
         work[m_parent[s]] += work[s];
-        children[m_parent[s]].push_back(s);
-      }
       else if(top < 0 || work[s] > work[top])
         top = s;
     }
     for(int node = top; node >= 0;)
     {
-      const std::vector<int>& c = children[node];
+      // its children in increasing order: in a postorder the last is node - 1, and each
+      // earlier one ends where the next one's subtree begins
+      std::vector<int> c(static_cast<std::size_t>(m_child_count[node]));
+      for(int k = m_child_count[node] - 1, child = node - 1; k >= 0; child -= subtree_size[child], --k)
+      {
+        CGAL_assertion(child >= 0 && m_parent[child] == node);
+        c[static_cast<std::size_t>(k)] = child;
+      }
       if(c.empty()) break;
       std::vector<int> by_work(c);
       std::sort(by_work.begin(), by_work.end(), [&](int a, int b) { return work[a] > work[b] || (work[a] == work[b] && a < b); });
