@@ -175,10 +175,9 @@ public:
     propagation.release_working_state();   // a repair after stitching builds it again
     // packed for stitching, where the memory peaks; a repair after it unpacks them
     d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
-    // what the candidates alone decide (the vertices' owners) beside the stitching, whose
-    // naming of the vertices runs on one thread: the two write to different arrays
-    run_beside(m_settings.parallel, [&]() { stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel); },
-               [&]() { summarize_candidates(); });
+    // what the candidates alone decide (the vertices' owners) beside the stitching's naming
+    // of the vertices, which runs on one thread: the two write to different arrays
+    stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel, [&]() { summarize_candidates(); });
     m_timer.stop("cutting");
 
     bool restitched = false;
