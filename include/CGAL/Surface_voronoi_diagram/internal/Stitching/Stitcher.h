@@ -234,19 +234,21 @@ private:
     // threads, another one backs those pages ahead of it (in the storage reserved above, as
     // raw memory: no element is read or written there), then does the caller's work. Only
     // what the naming will fill, so that no page is backed for nothing: the pieces are
-    // counted; a diagram of n sites has about one bisector crossing per piece beyond one a
-    // face and 2n Voronoi vertices inside faces (Euler; measured on boot, igea and igea-537k
-    // with 1k to 100k sites: crossings = extra pieces - n + 2), so the crossings and the
-    // corners come first, and the naming backs the last 2n vertices itself.
+    // counted; a diagram of n sites has, by Euler's formula, about n bisector crossings fewer
+    // than the pieces beyond one a face, and 2n Voronoi vertices inside faces (igea-537k,
+    // 10k sites: 321,727 crossings for 331,725 extra pieces; boot, the lampshade and igea with
+    // 1k to 100k sites within 0.1% of that), so as many crossings as extra pieces and as many
+    // vertices as the corners and the extra pieces (at most n crossings, 160 KB at 10k sites,
+    // backed for nothing), and the naming backs the last 2n vertices itself.
     const std::size_t extra_pieces = pieces - (std::min)(pieces, nf);
-    const std::size_t named_at_least = (std::min)(out.vertices.capacity(), m_mesh.number_of_vertices() + extra_pieces);
-    const std::size_t crossings_at_most = (std::min)(m_edge_crossings.capacity(), extra_pieces);
+    const std::size_t vertices_ahead = (std::min)(out.vertices.capacity(), m_mesh.number_of_vertices() + extra_pieces);
+    const std::size_t crossings_ahead = (std::min)(m_edge_crossings.capacity(), extra_pieces);
     run_beside(m_parallel, name_faces, [&]() {
       if(m_parallel)
         populate_pages_in_step({ { out.pieces.data(), pieces * sizeof(Partition::Piece) },
-                                 { out.vertices.data(), named_at_least * sizeof(Partition::Vertex) },
-                                 { m_edge_crossings.data(), crossings_at_most * sizeof(Edge_crossing_entry) },
-                                 { m_origins.data(), (m_keep_keys ? named_at_least : 0) * sizeof(Origin) } });
+                                 { out.vertices.data(), vertices_ahead * sizeof(Partition::Vertex) },
+                                 { m_edge_crossings.data(), crossings_ahead * sizeof(Edge_crossing_entry) },
+                                 { m_origins.data(), (m_keep_keys ? vertices_ahead : 0) * sizeof(Origin) } });
       if(beside) beside();
     });
   }
