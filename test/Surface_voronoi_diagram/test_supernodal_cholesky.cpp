@@ -170,6 +170,38 @@ TEST_CASE("supernodal Cholesky: on concurrent threads, the same bits", "[embeddi
   }
 }
 
+TEST_CASE("supernodal Cholesky: the same bits whatever cache sizes Eigen has read", "[embedding][numerics]")
+{
+  // Eigen blocks the fronts' dense kernels by the cache sizes it reads from the processor:
+  // without the factor's own fixed blocking, a front 700 rows wide is summed in another
+  // order under small caches than under large ones
+  const Sparse A = postordered(random_spd(1200, 1, 700, 11));
+  const std::ptrdiff_t l1 = Eigen::l1CacheSize(), l2 = Eigen::l2CacheSize(), l3 = Eigen::l3CacheSize();
+  std::vector<Eigen::VectorXd> solutions;
+  const std::ptrdiff_t sizes[3][3] = { { 16 * 1024, 128 * 1024, 1024 * 1024 },
+                                       { 64 * 1024, 4 * 1024 * 1024, 64 * 1024 * 1024 },
+                                       { 48 * 1024, 2 * 1024 * 1024, 96 * 1024 * 1024 } };
+  for(const auto& s : sizes)
+  {
+    const Eigen_cache_sizes caches(s[0], s[1], s[2]);
+    Cholesky cholesky;
+    REQUIRE(cholesky.factor(A));
+    CHECK(Eigen::l1CacheSize() == s[0]);   // the factor put back what it found
+    CHECK(Eigen::l2CacheSize() == s[1]);
+    CHECK(Eigen::l3CacheSize() == s[2]);
+    Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(A.rows(), -1, 2);
+    cholesky.solve_in_place(x.data());
+    solutions.push_back(x);
+  }
+  CHECK(Eigen::l1CacheSize() == l1);
+  CHECK(Eigen::l2CacheSize() == l2);
+  CHECK(Eigen::l3CacheSize() == l3);
+  for(std::size_t k = 1; k < solutions.size(); ++k)
+    for(Eigen::Index i = 0; i < solutions[0].size(); ++i)
+      if(solutions[k][i] != solutions[0][i])
+        FAIL("row " << i << ": " << solutions[0][i] << " under the first cache sizes, " << solutions[k][i] << " under set " << k);
+}
+
 TEST_CASE("supernodal Cholesky: new values on the same pattern are factorized anew", "[embedding][numerics]")
 {
   const Sparse A = postordered(random_spd(800, 2, 50, 5));

@@ -33,6 +33,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Fixed_dense_blocking.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -106,6 +107,7 @@ public:
   bool factor(const Sparse_matrix& A)
   {
     CGAL_precondition(A.rows() == A.cols());
+    const Fixed_dense_blocking same_bits_on_every_machine;
     m_ok = false;
     const Sparse_matrix upper = upper_pattern(A);
     const std::vector<int> parent = elimination_tree_of_upper(upper);

@@ -20,6 +20,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Fixed_dense_blocking.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/Supernodal_cholesky.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/block_krylov_schur.h>
@@ -349,6 +350,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
                                                             const std::function<bool()>& keep_going,
                                                             bool parallel = false)
 {
+  const Fixed_dense_blocking same_bits_on_every_machine;   // the Ritz pairs' and restarts' products too
   const Eigen::Index n = L.rows();
   CGAL_precondition_msg(nev >= 1 && nev < n, "more vertices than eigenpairs are needed");
 
