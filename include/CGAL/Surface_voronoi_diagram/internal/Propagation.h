@@ -180,7 +180,15 @@ public:
       queue.clear();
       start_at(s, m_site_faces[s], queue);
       for(std::size_t f : extra_starts[s]) start_at(s, f, queue);
-      for(std::size_t next = 0; next < queue.size(); ++next) spread(s, queue[next], queue, nullptr);
+      for(std::size_t next = 0; next < queue.size(); ++next)
+      {
+        // a cell's faces lie hundreds of faces apart in the mesh's order, and spreading waits
+        // on memory (the links of a face, then its neighbours' lists): ask for both a face or
+        // two ahead of the queue
+        if(next + 2 < queue.size()) prefetch_link(queue[next + 2]);
+        if(next + 1 < queue.size()) prefetch_neighbour_lists(queue[next + 1]);
+        spread(s, queue[next], queue, nullptr);
+      }
     }
     // The previous candidates no field reached are dropped, and the dominated candidates as
     // after any propagation; what they stopped is offered again around the faces that lost
@@ -402,6 +410,21 @@ private:
     for(const Candidate& b : list)
       if(b.site != x.site && dominates(b, x)) return true;
     return false;
+  }
+
+  void prefetch_link(std::size_t f) const { prefetch(&m_links[f]); }
+  void prefetch_neighbour_lists(std::size_t f) const
+  {
+    const Face_link& l = m_links[f];
+    for(int k = 0; k < 3; ++k)
+      if(l.neighbor[k] != no_link) prefetch_list(l.neighbor[k]);
+  }
+  // a list with its inline candidates (72 bytes) spans two cache lines
+  void prefetch_list(std::size_t f) const
+  {
+    const char* list = reinterpret_cast<const char*>(&candidates[f]);
+    prefetch(list);
+    prefetch(list + sizeof(Candidate_list) - 1);
   }
 
   // run_from(): the field of `site` starts in its face `f`
@@ -654,7 +677,7 @@ private:
       if(!queue.empty())
       {
         const Event& next = queue.top();
-        prefetch(&candidates[next.face]);
+        prefetch_list(next.face);
         prefetch(&m_links[next.face]);
         prefetch(&front.values[next.slot]);
       }
@@ -681,7 +704,7 @@ private:
         if(l.neighbor[k] != no_link)
         {
           prefetch(&m_offers[l.neighbor[k]]);
-          prefetch(&candidates[l.neighbor[k]]);
+          prefetch_list(l.neighbor[k]);
         }
       for(int k = 0; k < 3; ++k)
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
