@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include <test_meshes.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Fixed_dense_blocking.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/block_krylov_schur.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
@@ -175,7 +176,7 @@ TEST_CASE("block Krylov-Schur: the same bits whatever cache sizes Eigen has read
   std::vector<SV::internal::Eigen_solve_result> results;
   for(const auto& s : sizes)
   {
-    const Eigen_cache_sizes caches(s[0], s[1], s[2]);
+    const SV::internal::Fixed_dense_blocking machine(s[0], s[1], s[2]);   // as if the processor had these caches
     results.push_back(SV::internal::smallest_generalized_eigenpairs_in_order<SV::internal::Supernodal_cholesky_traits>(
         L, M, 40, 1e-10, 1000, std::function<bool()>()));
   }

@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include <test_meshes.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Fixed_dense_blocking.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/Supernodal_cholesky.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
 
@@ -183,7 +184,7 @@ TEST_CASE("supernodal Cholesky: the same bits whatever cache sizes Eigen has rea
                                        { 48 * 1024, 2 * 1024 * 1024, 96 * 1024 * 1024 } };
   for(const auto& s : sizes)
   {
-    const Eigen_cache_sizes caches(s[0], s[1], s[2]);
+    const SV::internal::Fixed_dense_blocking machine(s[0], s[1], s[2]);   // as if the processor had these caches
     Cholesky cholesky;
     REQUIRE(cholesky.factor(A));
     CHECK(Eigen::l1CacheSize() == s[0]);   // the factor put back what it found

@@ -18,8 +18,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <Eigen/Core>
-
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -106,24 +104,6 @@ void check_invariants(const Diagram& vd, bool unweighted = true)
 }
 
 // Whether p lies on the outline of the square [lo, hi]^2 in x and y (to 1e-9).
-/// Makes Eigen block its dense products as if the processor's caches had these sizes, and
-/// puts back what it had read when it goes: the machines a test runs on read other sizes.
-class Eigen_cache_sizes
-{
-public:
-  Eigen_cache_sizes(std::ptrdiff_t l1, std::ptrdiff_t l2, std::ptrdiff_t l3)
-    : m_l1(Eigen::l1CacheSize()), m_l2(Eigen::l2CacheSize()), m_l3(Eigen::l3CacheSize())
-  {
-    Eigen::setCpuCacheSizes(l1, l2, l3);
-  }
-  ~Eigen_cache_sizes() { Eigen::setCpuCacheSizes(m_l1, m_l2, m_l3); }
-  Eigen_cache_sizes(const Eigen_cache_sizes&) = delete;
-  Eigen_cache_sizes& operator=(const Eigen_cache_sizes&) = delete;
-
-private:
-  std::ptrdiff_t m_l1, m_l2, m_l3;
-};
-
 inline bool on_square_outline(const Point& p, double lo, double hi)
 {
   auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };

@@ -678,7 +678,7 @@ private:
       {
         const Event& next = queue.top();
         prefetch_list(next.face);
-        prefetch(&m_links[next.face]);
+        prefetch_link(next.face);
         prefetch(&front.values[next.slot]);
       }
       const Candidate x(e.site, front.values[e.slot], e.from_edge);

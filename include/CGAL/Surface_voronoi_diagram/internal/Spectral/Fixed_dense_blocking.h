@@ -44,10 +44,12 @@ public:
   static constexpr std::ptrdiff_t l2 = 512 * 1024;
   static constexpr std::ptrdiff_t l3 = 256 * 1024 * 1024;
 
-  Fixed_dense_blocking()
+  Fixed_dense_blocking() : Fixed_dense_blocking(l1, l2, l3) {}
+  /// other sizes (the tests play other machines with it)
+  Fixed_dense_blocking(std::ptrdiff_t l1_bytes, std::ptrdiff_t l2_bytes, std::ptrdiff_t l3_bytes)
     : m_l1(Eigen::l1CacheSize()), m_l2(Eigen::l2CacheSize()), m_l3(Eigen::l3CacheSize())
   {
-    Eigen::setCpuCacheSizes(l1, l2, l3);
+    Eigen::setCpuCacheSizes(l1_bytes, l2_bytes, l3_bytes);
   }
   ~Fixed_dense_blocking() { Eigen::setCpuCacheSizes(m_l1, m_l2, m_l3); }
 
