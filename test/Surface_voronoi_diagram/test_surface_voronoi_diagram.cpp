@@ -481,6 +481,57 @@ TEST_CASE("diagram: a component without sites is unreached, not an error", "[dia
   CHECK(vd.statistics().unreached_components == 1);
 }
 
+TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one of the same points", "[diagram]")
+{
+  typedef SV::internal::Indexed_mesh<Mesh> Indexed;
+  Mesh m;
+  GEN::make_icosphere(m, 3, 1.0);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const auto sites = area_uniform_locations(m, 40, 3);
+  const std::shared_ptr<const Indexed> copy = std::make_shared<const Indexed>(m, vpm);
+  CHECK(SV::internal::shared_or_new_indexed_mesh(copy, m, vpm) == copy);
+
+  // another mesh with the same points and faces is not the same mesh
+  Mesh twin = m;
+  const auto other = SV::internal::shared_or_new_indexed_mesh(copy, twin, get(CGAL::vertex_point, twin));
+  CHECK(other != copy);
+  CHECK(other->source_mesh == &twin);
+
+  // a vertex moved after the copy was made: a new copy, and the diagram given the stale one
+  // is the diagram of the moved mesh
+  const Mesh::Vertex_index moved = *vertices(m).begin();
+  put(vpm, moved, Point(0.3, 0.2, 1.4));
+  const auto fresh = SV::internal::shared_or_new_indexed_mesh(copy, m, vpm);
+  REQUIRE(fresh != copy);
+  CHECK(fresh->points[0] == SV::internal::to_point_d(get(vpm, moved)));
+  Euclidean e(m);
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> own(m, e, sites);
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::parameters::shared_indexed_mesh(copy));
+  CHECK(given.statistics().surface_area == own.statistics().surface_area);
+  for(std::size_t i = 0; i < sites.size(); ++i)
+    CHECK(given.cell_area(i) == own.cell_area(i));
+
+  // validate_input() on the shared copy, with the reader's checks taken as made, still finds
+  // what the reader does not check: here a face of zero area
+  Mesh flat;
+  GEN::make_icosphere(flat, 1, 1.0);
+  const Mesh::Face_index f = *faces(flat).begin();
+  const auto h = halfedge(f, flat);
+  put(get(CGAL::vertex_point, flat), target(h, flat), get(get(CGAL::vertex_point, flat), source(h, flat)));
+  const std::shared_ptr<const Indexed> flat_copy = std::make_shared<const Indexed>(flat, get(CGAL::vertex_point, flat));
+  std::vector<SV::Input_problem> with_hooks = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
+      SV::parameters::shared_indexed_mesh(flat_copy, SV::parameters::checked_mesh_topology(true)));
+  std::vector<SV::Input_problem> without = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) });
+  REQUIRE(!without.empty());
+  REQUIRE(with_hooks.size() == without.size());
+  for(std::size_t k = 0; k < without.size(); ++k)
+  {
+    CHECK(with_hooks[k].kind == without[k].kind);
+    CHECK(with_hooks[k].element == without[k].element);
+  }
+  CHECK(std::any_of(without.begin(), without.end(), [](const SV::Input_problem& p) { return p.kind == SV::Input_problem::ZERO_AREA_FACE; }));
+}
+
 TEST_CASE("diagram: bad input gives clear errors", "[diagram][errors]")
 {
   Mesh m;

@@ -249,6 +249,9 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 
 // the metric of --dimension full, and of auto when its columns fit
 typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
+// The input mesh indexed once (after reading) for the validation, the metric, Lloyd and the
+// diagram; each would build its own copy otherwise (0.06-0.09 s and 60 MB at 537k vertices).
+typedef std::shared_ptr<const SV::internal::Indexed_mesh<Mesh> > Shared_indexed_mesh;
 // the factorization and solves of the eigen-solver on every core (the same bits)
 typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Embedding_metric;
 
@@ -261,7 +264,8 @@ typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Def
 class Input_metric
 {
 public:
-  Input_metric(const Arguments& args, const Mesh& mesh) : m_args(args), m_mesh(mesh) {}
+  Input_metric(const Arguments& args, const Mesh& mesh, Shared_indexed_mesh indexed = Shared_indexed_mesh())
+    : m_args(args), m_mesh(mesh), m_indexed(std::move(indexed)) {}
 
   // builds the metric unless it is built; its seconds are those of the first build
   void build(std::size_t dimension)
@@ -269,11 +273,12 @@ public:
     if(built()) return;
     const auto start = std::chrono::steady_clock::now();
     if(m_args.metric == "biharmonic" && m_args.dimension_full)
-      m_full.reset(new Full_spectrum_metric(m_mesh));
+      m_full.reset(new Full_spectrum_metric(m_mesh, SV::parameters::shared_indexed_mesh(m_indexed)));
     else if(m_args.metric == "biharmonic")
-      m_biharmonic.reset(new Embedding_metric(m_mesh, SV::parameters::embedding_dimension(dimension)));
+      m_biharmonic.reset(new Embedding_metric(m_mesh, SV::parameters::embedding_dimension(dimension,
+                                                      SV::parameters::shared_indexed_mesh(m_indexed))));
     else if(m_args.metric == "geodesic")
-      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh));
+      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh, SV::parameters::shared_indexed_mesh(m_indexed)));
     else
       m_euclidean.reset(new SV::Euclidean_embedding<Mesh>(m_mesh));
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -293,11 +298,12 @@ public:
   bool built() const { return m_full || m_biharmonic || m_geodesic || m_euclidean; }
   double build_seconds() const { return m_seconds; }
   // frees it, for a stage that works on another mesh
-  void release() { m_full.reset(); m_biharmonic.reset(); m_geodesic.reset(); m_euclidean.reset(); }
+  void release() { m_full.reset(); m_biharmonic.reset(); m_geodesic.reset(); m_euclidean.reset(); m_indexed.reset(); }
 
 private:
   const Arguments& m_args;
   const Mesh& m_mesh;
+  Shared_indexed_mesh m_indexed;
   std::unique_ptr<Full_spectrum_metric> m_full;
   std::unique_ptr<Embedding_metric> m_biharmonic;
   std::unique_ptr<SV::Geodesic_metric<Mesh> > m_geodesic;
@@ -506,13 +512,13 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
 template <class Metric>
 void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
          const Diagram_choices& choices, double load, double embedding, double insertion,
-         const std::vector<Point>& site_points, std::size_t sites_added)
+         const std::vector<Point>& site_points, std::size_t sites_added, const Shared_indexed_mesh& indexed)
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
   SV::internal::Stage_times times;
   const Diagram vd = with_diagram_parameters(choices,
-      SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)),
+      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline))),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
   // the dual first: with --valid-dual, one that is not valid is an error, and no file is written
@@ -721,16 +727,20 @@ int run_main(int argc, char** argv)
       fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(locations.size()) + ": " + what);
     }
   }
-  const double load = std::chrono::duration<double>(Clock::now() - t0).count();
-
-  // The library's preconditions, checked here so that every build gives one readable line.
-  for(const SV::Input_problem& p : SV::validate_input(mesh, locations))
+  // The library's preconditions, checked here so that every build gives one readable line
+  // (what the reader has checked on the soup, validate_input() does not check again); part
+  // of the loading, as the copy it checks on, which every stage shares
+  Shared_indexed_mesh indexed = std::make_shared<const SV::internal::Indexed_mesh<Mesh> >(
+      mesh, get(CGAL::vertex_point, mesh), SV::internal::use_threads<CGAL::Parallel_if_available_tag>());
+  for(const SV::Input_problem& p : SV::validate_input(mesh, locations,
+                                                      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::checked_mesh_topology(true))))
   {
     if(p.kind == SV::Input_problem::COINCIDENT_SITES && !lines.empty())
       fail(1, "sites file lines " + std::to_string(lines[p.element]) + " and " + std::to_string(lines[p.other])
               + ": the two sites are at the same surface point");
     fail(1, args.mesh + ": " + p.message);
   }
+  const double load = std::chrono::duration<double>(Clock::now() - t0).count();
   // --dimension auto takes the full spectrum when its columns fit (biharmonic_full_spectrum_for_sites(),
   // with the vertices --insert-sites adds and the sites --valid-dual may add), and otherwise a
   // dimension growing with the sites given; a dimension that resolves fewer cells than there
@@ -743,7 +753,7 @@ int run_main(int argc, char** argv)
   if(args.metric == "biharmonic" && args.dimension_full && !full_fits)
     fail(1, "--dimension full: the full spectrum would take " + full_size + ", more than the 2 GiB the program allows; "
             "give a dimension or --dimension auto");
-  Input_metric input_metric(args, mesh);
+  Input_metric input_metric(args, mesh, indexed);
   if(args.metric == "biharmonic" && args.dimension_auto)
   {
     args.dimension_full = full_fits;
@@ -775,7 +785,8 @@ int run_main(int argc, char** argv)
   // with a note.
   auto dimension_for = [&](const Mesh& m) {
     if(args.metric != "biharmonic" || args.dimension_full) return asked_dimension;
-    const std::size_t largest = CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
+    const std::size_t largest = (&m == &mesh && indexed) ? CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(*indexed)
+                                                         : CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
     if(asked_dimension <= largest) return asked_dimension;
     const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
     const std::string what = "the mesh has " + std::to_string(nv) + " vertices and " + std::to_string(components)
@@ -811,7 +822,8 @@ int run_main(int argc, char** argv)
       const auto lloyd_start = Clock::now();
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
-        const auto steps = SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd));
+        const auto steps = SV::parameters::shared_indexed_mesh(indexed,
+            SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd)));
         return density
           ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)
           : with_diagram_parameters(choices, steps, run);
@@ -899,7 +911,11 @@ int run_main(int argc, char** argv)
       const Mesh* work = &mesh;
       // the final diagram on a copy of the mesh (sites inserted, or refined for the geodesic
       // metric) has a metric of its own: the input mesh's is freed first
-      if(args.insert_sites || (args.metric == "geodesic" && !args.no_refine)) input_metric.release();
+      if(args.insert_sites || (args.metric == "geodesic" && !args.no_refine))
+      {
+        input_metric.release();
+        indexed.reset();
+      }
       std::vector<Location> work_sites = locations;
       SV::Site_insertion_result<Mesh, Point> inserted;
       Mesh refined;   // the refined copy, each face knowing the input face it lies in
@@ -972,14 +988,14 @@ int run_main(int argc, char** argv)
       if(work == &mesh)
         input_metric.apply(dimension, [&](auto& metric) {
           const double embedding = args.metric == "biharmonic" ? input_metric.build_seconds() : 0.;
-          run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added);
+          run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added, indexed);
         });
       else
       {
         Input_metric metric(args, *work);
         metric.apply(dimension, [&](auto& m) {
           const double embedding = args.metric == "biharmonic" ? metric.build_seconds() : 0.;
-          run(args, *work, m, work_sites, choices, load, embedding, insertion, site_points, sites_added);
+          run(args, *work, m, work_sites, choices, load, embedding, insertion, site_points, sites_added, Shared_indexed_mesh());
         });
       }
     }

@@ -211,7 +211,10 @@ public:
     Surface_voronoi::internal::Stage_times* times =
         choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::internal::Stage_times*>(nullptr));
     const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
-    compute(tm, vpm, dimension, tolerance, restarts, callback, times);
+    const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> > given =
+        choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh),
+                         std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >());
+    compute(tm, vpm, given, dimension, tolerance, restarts, callback, times);
   }
 
 CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
@@ -234,10 +237,17 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   /// components (one zero eigenvalue each) minus one
   static std::size_t maximum_dimension(const TriangleMesh& tm)
   {
-    const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> mesh(tm, get_const_property_map(CGAL::vertex_point, tm));
+    return maximum_dimension(Surface_voronoi::internal::Indexed_mesh<TriangleMesh>(tm, get_const_property_map(CGAL::vertex_point, tm)));
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  // the same, from an indexed copy already made (an internal hook)
+  static std::size_t maximum_dimension(const Surface_voronoi::internal::Indexed_mesh<TriangleMesh>& mesh)
+  {
     const std::size_t used = mesh.number_of_components + 1;
     return mesh.number_of_vertices() > used ? mesh.number_of_vertices() - used : 0;
   }
+  /// \endcond
 
   /// \name SurfaceVoronoiEmbedding
   /// @{
@@ -308,7 +318,9 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   /// \endcond
 
 private:
-  void compute(const TriangleMesh& tm, const Vertex_point_map& vpm, std::size_t dimension, double tolerance,
+  void compute(const TriangleMesh& tm, const Vertex_point_map& vpm,
+               const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >& given,
+               std::size_t dimension, double tolerance,
                std::size_t restarts, const std::function<bool(double)>& callback,
                Surface_voronoi::internal::Stage_times* times)
   {
@@ -316,7 +328,7 @@ private:
     CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     CGAL_precondition_msg(dimension >= 1, "the embedding dimension must be at least 1");
     SVi::Stage_timer timer(times);
-    auto mesh = std::make_shared<SVi::Indexed_mesh<TriangleMesh> >(tm, vpm);
+    const auto mesh = SVi::shared_or_new_indexed_mesh(given, tm, vpm);
     m_mesh = mesh;
     Eigen::SparseMatrix<double> L, M;
     SVi::assemble_cotangent_laplacian(mesh->points, mesh->triangles, L, M);

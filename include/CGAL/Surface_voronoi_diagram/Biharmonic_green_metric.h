@@ -154,7 +154,8 @@ public:
     m_maximum_bytes = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::maximum_column_memory), 4294967296.);
     CGAL_precondition_msg(m_maximum_bytes >= 0, "maximum_column_memory must not be negative");
-    m_mesh = std::make_shared<const Indexed>(tm, vpm);
+    m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
     auto green = std::make_shared<Green_function>();
     if(!green->build(m_mesh->points, m_mesh->triangles, m_mesh->face_component, m_mesh->number_of_components))
       throw Numerical_error("Biharmonic_green_metric: the cotangent Laplacian is not positive definite once a vertex of "

@@ -18,6 +18,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
+#include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Fast_marching/Local_fast_marching.h>
@@ -124,7 +125,8 @@ public:
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     CGAL_precondition_msg(num_vertices(tm) < std::size_t(std::uint32_t(-1)) && num_faces(tm) < std::size_t(std::uint32_t(-1)),
                           "the mesh has too many elements for the geodesic metric");
-    m_mesh = std::make_shared<const Indexed>(tm, vpm);
+    m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
     m_marching_mesh = std::make_shared<const Marching_mesh>(*m_mesh);
   }
 

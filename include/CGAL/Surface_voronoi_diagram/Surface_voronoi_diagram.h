@@ -469,7 +469,8 @@ private:
 
     const std::shared_ptr<const Indexed_mesh> given =
         choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
-    m_data.mesh = (given && given->source_mesh == m_tm) ? given : shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
+    m_data.mesh = given ? SVi::shared_or_new_indexed_mesh(given, tm, m_vpm, SVi::use_threads<ConcurrencyTag>())
+                        : shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
     CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
     CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
     CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
@@ -542,16 +543,8 @@ private:
   // a copy of the diagram's own.
   std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric& metric, std::true_type) const
   {
-    const std::shared_ptr<const Indexed_mesh>& shared = metric.indexed_mesh();
-    if(shared && shared->source_mesh == m_tm && shared->number_of_vertices() == num_vertices(*m_tm)
-       && shared->number_of_faces() == num_faces(*m_tm))
-    {
-      bool same_points = true;
-      for(std::size_t v = 0; v < shared->number_of_vertices() && same_points; ++v)
-        same_points = (Surface_voronoi::internal::to_point_d(get(m_vpm, shared->vertex_handles[v])) == shared->points[v]);
-      if(same_points) return shared;
-    }
-    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm, Surface_voronoi::internal::use_threads<ConcurrencyTag>());
+    return Surface_voronoi::internal::shared_or_new_indexed_mesh(metric.indexed_mesh(), *m_tm, m_vpm,
+                                                                 Surface_voronoi::internal::use_threads<ConcurrencyTag>());
   }
   std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric&, std::false_type) const
   {

@@ -213,8 +213,13 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const std::function<bool(double)> callback = internal::callback_of(np);
   const std::size_t first_moving = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::first_moving_site), std::size_t(0));
 
-  // indexed once for all the diagrams (and the checks for coincident sites)
-  const auto shared_mesh = std::make_shared<const internal::Indexed_mesh<TriangleMesh> >(tm, vpm, internal::use_threads<ConcurrencyTag>());
+  // indexed once for all the diagrams (and the checks for coincident sites), or the copy the
+  // caller or the metric has
+  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> > given =
+      choose_parameter(get_parameter(np, Surface_voronoi::internal_np::shared_indexed_mesh),
+                       std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >());
+  const auto shared_mesh = internal::shared_or_new_indexed_mesh(given ? given : internal::indexed_mesh_of<TriangleMesh>(metric),
+                                                                tm, vpm, internal::use_threads<ConcurrencyTag>());
   const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
   internal::Nearest_point_of_cell<TriangleMesh, VPM, Geom_traits> projection(mesh, tm, vpm,
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));

@@ -71,6 +71,7 @@ enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
 enum cells_only_t { cells_only };
 enum shared_indexed_mesh_t { shared_indexed_mesh };
+enum checked_mesh_topology_t { checked_mesh_topology };
 enum first_moving_site_t { first_moving_site };
 enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
 enum vertex_density_map_t { vertex_density_map };
@@ -317,9 +318,14 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
 // An internal hook, not API: the diagrams inside lloyd_relaxation() need the cells (their
 // pieces, areas, centroids and energy), not the sites' neighbours or the vertices' owners.
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
-// An internal hook, not API: lloyd_relaxation() indexes the mesh once for all its diagrams
-// (a std::shared_ptr to the internal Indexed_mesh, built from the same vertex point map).
+// An internal hook, not API: lloyd_relaxation() indexes the mesh once for all its diagrams,
+// and the program once for its validation, metric, Lloyd and diagram (a std::shared_ptr to the
+// internal Indexed_mesh; used where it is a copy of the same mesh with the same points).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
+// An internal hook, not API: validate_input() skips the checks of the halfedge structure,
+// of the faces' degrees and of the vertices' fans, which the program's reader has made on
+// the polygon soup the mesh was built from (a tenth of a second at 537k vertices).
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)

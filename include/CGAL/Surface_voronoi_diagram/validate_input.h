@@ -27,6 +27,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,8 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
   using CGAL::parameters::is_default_parameter;
   std::vector<Input_problem> problems;
   internal::Problem_list list(problems, 10);
-  if(!CGAL::is_valid_polygon_mesh(tm))
+  const bool topology_checked = choose_parameter(get_parameter(np, internal_np::checked_mesh_topology), false);
+  if(!topology_checked && !CGAL::is_valid_polygon_mesh(tm))
   {
     list.add(Input_problem::INVALID_MESH, 0, "the mesh is not a valid polygon mesh (its halfedges are inconsistent)");
     return problems;
@@ -100,11 +102,14 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
     list.add(Input_problem::EMPTY_MESH, 0, "the mesh is empty (no faces)");
     return problems;
   }
-  if(!internal::find_non_triangles(tm, list)) return problems;
+  if(!topology_checked && !internal::find_non_triangles(tm, list)) return problems;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  const internal::Indexed_mesh<TriangleMesh> mesh(tm, vpm);
-  internal::find_mesh_problems(mesh, list);
+  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> > indexed = internal::shared_or_new_indexed_mesh(
+      choose_parameter(get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >()),
+      tm, vpm);
+  const internal::Indexed_mesh<TriangleMesh>& mesh = *indexed;
+  internal::find_mesh_problems(mesh, list, !topology_checked);
 
   const double max_distance = choose_parameter(get_parameter(np, internal_np::max_site_distance),
                                                std::numeric_limits<double>::infinity());

@@ -36,6 +36,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -309,6 +310,25 @@ private:
     bbox_diagonal = std::sqrt(s);
   }
 };
+
+/// `given` if it is an indexed copy of `tm` with the points of `vpm`, else a new copy. The
+/// internal hook `shared_indexed_mesh` hands one copy to every stage (the program's validation,
+/// metric, Lloyd and diagram): at 537k vertices a copy costs 0.06-0.09 s and 60 MB.
+template <class TriangleMesh, class VertexPointMap>
+std::shared_ptr<const Indexed_mesh<TriangleMesh> >
+shared_or_new_indexed_mesh(const std::shared_ptr<const Indexed_mesh<TriangleMesh> >& given, const TriangleMesh& tm,
+                           VertexPointMap vpm, bool parallel = false)
+{
+  if(given && given->source_mesh == &tm && given->number_of_vertices() == num_vertices(tm)
+     && given->number_of_faces() == num_faces(tm))
+  {
+    bool same_points = true;
+    for(std::size_t v = 0; v < given->number_of_vertices() && same_points; ++v)
+      same_points = (to_point_d(get(vpm, given->vertex_handles[v])) == given->points[v]);
+    if(same_points) return given;
+  }
+  return std::make_shared<const Indexed_mesh<TriangleMesh> >(tm, vpm, parallel);
+}
 
 } // namespace internal
 } // namespace Surface_voronoi

@@ -122,9 +122,9 @@ constexpr double min_longest_edge = 0x1p-200;
 constexpr double min_relative_area = 0x1p-44;
 
 /// non-finite points and coordinates out of range, faces without area, degenerate or too
-/// small, isolated vertices, non-manifold vertices
+/// small, isolated vertices, and (unless the caller has checked them) non-manifold vertices
 template <class TriangleMesh>
-void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& list)
+void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& list, bool check_vertex_fans = true)
 {
   std::vector<std::uint8_t> used(mesh.number_of_vertices(), 0), finite(mesh.number_of_vertices(), 1);
   for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
@@ -166,6 +166,7 @@ void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& li
   }
   for(std::size_t v = 0; v < used.size(); ++v)
     if(!used[v]) list.add(Input_problem::ISOLATED_VERTEX, v, "vertex " + std::to_string(v) + " belongs to no face");
+  if(!check_vertex_fans) return;
   for(std::size_t v : non_manifold_vertices(mesh))
     list.add(Input_problem::NON_MANIFOLD_VERTEX, v, "vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans");
 }

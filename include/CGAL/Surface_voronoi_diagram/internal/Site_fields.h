@@ -28,6 +28,7 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -67,6 +68,16 @@ struct Has_indexed_mesh : std::false_type {};
 template <class Metric>
 struct Has_indexed_mesh<Metric, decltype(void(std::declval<const Metric&>().indexed_mesh()))>
   : std::true_type {};
+
+/// the metric's indexed copy of its mesh, or none
+template <class TriangleMesh, class Metric>
+std::shared_ptr<const Indexed_mesh<TriangleMesh> > indexed_mesh_of(const Metric& metric)
+{
+  if constexpr(Has_indexed_mesh<Metric>::value)
+    return metric.indexed_mesh();
+  else
+    return std::shared_ptr<const Indexed_mesh<TriangleMesh> >();
+}
 
 /// The coordinates of an embedding, read once: one dense row per vertex and per site.
 class Embedding_values
