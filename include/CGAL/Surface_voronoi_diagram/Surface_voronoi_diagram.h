@@ -469,8 +469,8 @@ private:
 
     const std::shared_ptr<const Indexed_mesh> given =
         choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
-    m_data.mesh = given ? SVi::shared_or_new_indexed_mesh(given, tm, m_vpm, SVi::use_threads<ConcurrencyTag>())
-                        : shared_or_new_mesh(metric, SVi::Has_indexed_mesh<Metric>());
+    m_data.mesh = SVi::shared_or_new_indexed_mesh(given ? given : SVi::indexed_mesh_of<TriangleMesh>(metric), tm, m_vpm,
+                                                  SVi::use_threads<ConcurrencyTag>());
     CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
     CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
     CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
@@ -538,18 +538,6 @@ private:
   }
   template <class NamedParameters, class Site_description>
   static double weight_of(const NamedParameters&, const Site_description&, std::size_t, std::false_type) { return 0.; }
-
-  // The metric's indexed copy of the mesh when it has one built from the same points; else
-  // a copy of the diagram's own.
-  std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric& metric, std::true_type) const
-  {
-    return Surface_voronoi::internal::shared_or_new_indexed_mesh(metric.indexed_mesh(), *m_tm, m_vpm,
-                                                                 Surface_voronoi::internal::use_threads<ConcurrencyTag>());
-  }
-  std::shared_ptr<const Indexed_mesh> shared_or_new_mesh(const Metric&, std::false_type) const
-  {
-    return std::make_shared<const Indexed_mesh>(*m_tm, m_vpm, Surface_voronoi::internal::use_threads<ConcurrencyTag>());
-  }
 
   void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
                const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
