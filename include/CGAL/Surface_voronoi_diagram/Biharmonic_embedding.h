@@ -328,7 +328,7 @@ private:
     CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     CGAL_precondition_msg(dimension >= 1, "the embedding dimension must be at least 1");
     SVi::Stage_timer timer(times);
-    const auto mesh = SVi::shared_or_new_indexed_mesh(given, tm, vpm);
+    const auto mesh = SVi::shared_or_new_indexed_mesh(given, tm, vpm, SVi::use_threads<ConcurrencyTag>());
     m_mesh = mesh;
     Eigen::SparseMatrix<double> L, M;
     SVi::assemble_cotangent_laplacian(mesh->points, mesh->triangles, L, M);
