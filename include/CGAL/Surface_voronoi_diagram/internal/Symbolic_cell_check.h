@@ -153,27 +153,24 @@ public:
   {
     const std::size_t nf = m_mesh.number_of_faces(), n = sites.size();
     const std::size_t chunk = 4096;
-    std::vector<std::vector<Piece_ref> > breaks_of_chunk(number_of_chunks(nf, chunk));
-    std::vector<std::uint8_t> tie(breaks_of_chunk.size(), 0);
-    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+    // the faces whose cut is degenerate (an exact tie), one mark per chunk of them
+    std::vector<std::uint8_t> tie(number_of_chunks(nf, chunk), 0);
+    // in face order, as binary searches want
+    const std::vector<Piece_ref> breaks = gather_in_chunk_order<Piece_ref>(nf, chunk, parallel,
+        [&](std::size_t begin, std::size_t end, std::vector<Piece_ref>& found) {
       for(std::size_t f = begin; f < end; ++f)
       {
         const Face_cuts::Cut cut = m_cuts[f];
-        if(cut.degenerate) tie[c] = 1;
+        if(cut.degenerate) tie[begin / chunk] = 1;
         // a face of one candidate keeps its edges whole (see joined_to_parent()): most faces
         if(cut.whole_face || m_candidates[f].empty()) continue;
         const std::size_t pieces = cut.pieces.size();
         for(std::size_t local = 0; local < pieces; ++local)
           if(!joined_to_parent(f, local))
-            breaks_of_chunk[c].push_back(Piece_ref{ f, local });
+            found.push_back(Piece_ref{ f, local });
       }
     });
-    std::vector<Piece_ref> breaks;   // in face order, as binary searches want
-    for(std::size_t c = 0; c < breaks_of_chunk.size(); ++c)
-    {
-      if(tie[c]) return false;
-      breaks.insert(breaks.end(), breaks_of_chunk[c].begin(), breaks_of_chunk[c].end());
-    }
+    if(std::find(tie.begin(), tie.end(), std::uint8_t(1)) != tie.end()) return false;
     if(breaks.size() > 4096) return false;
     std::vector<std::uint8_t> suspect(n, 0);
     bool any_suspect = false;

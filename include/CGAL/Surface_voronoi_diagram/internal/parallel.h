@@ -121,6 +121,21 @@ std::vector<std::size_t> chunk_offsets(std::size_t n, std::size_t size, bool par
   return first;
 }
 
+/// What `gather(begin, end, found)` appends to `found` for the chunks of [0, n), joined in chunk
+/// order: the same vector, in the same order, whether the chunks ran concurrently or not.
+template <class T, class Gather>
+std::vector<T> gather_in_chunk_order(std::size_t n, std::size_t size, bool parallel, const Gather& gather)
+{
+  std::vector<std::vector<T> > of_chunk(number_of_chunks(n, size));
+  for_each_chunk(n, size, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) { gather(begin, end, of_chunk[c]); });
+  std::size_t total = 0;
+  for(const std::vector<T>& found : of_chunk) total += found.size();
+  std::vector<T> out;
+  out.reserve(total);
+  for(const std::vector<T>& found : of_chunk) out.insert(out.end(), found.begin(), found.end());
+  return out;
+}
+
 /// Runs `main` and `beside`, with `parallel` possibly at the same time (`beside` as a task
 /// another thread may take while `main` runs); they must not write to the same data.
 template <class Main, class Beside>

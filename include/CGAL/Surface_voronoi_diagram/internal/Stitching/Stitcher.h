@@ -557,8 +557,9 @@ private:
     bool any = false;
     // the coincident pairs, found face by face (in chunks), then welded in face order
     const std::size_t nf = out.face_begin.size() - 1, chunk = 8192;
-    std::vector<std::vector<std::pair<std::size_t, std::size_t> > > coincident(number_of_chunks(nf, chunk));
-    for_each_chunk(nf, chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+    typedef std::pair<std::size_t, std::size_t> Vertex_pair;
+    const std::vector<Vertex_pair> coincident = gather_in_chunk_order<Vertex_pair>(nf, chunk, m_parallel,
+        [&](std::size_t begin, std::size_t end, std::vector<Vertex_pair>& found) {
       // (position, id), sorted by position then id: the points copied, not looked up per comparison
       std::vector<std::pair<Point_d, std::size_t> > used;
       for(std::size_t f = begin; f < end; ++f)
@@ -578,20 +579,19 @@ private:
         std::sort(used.begin(), used.end());
         for(std::size_t k = 1; k < used.size(); ++k)
           if(used[k].second != used[k - 1].second && used[k].first == used[k - 1].first)
-            coincident[c].emplace_back(used[k - 1].second, used[k].second);
+            found.emplace_back(used[k - 1].second, used[k].second);
       }
     });
-    for(const auto& pairs : coincident)
-      for(const auto& pair : pairs)
-      {
-        const std::size_t a = welded.find(pair.first), b = welded.find(pair.second);
-        if(a == b) continue;
-        // a corner before an edge point before a face point
-        const bool a_first = out.vertices[a].kind < out.vertices[b].kind
-                             || (out.vertices[a].kind == out.vertices[b].kind && a < b);
-        if(a_first) welded.link(b, a); else welded.link(a, b);
-        any = true;
-      }
+    for(const Vertex_pair& pair : coincident)
+    {
+      const std::size_t a = welded.find(pair.first), b = welded.find(pair.second);
+      if(a == b) continue;
+      // a corner before an edge point before a face point
+      const bool a_first = out.vertices[a].kind < out.vertices[b].kind
+                           || (out.vertices[a].kind == out.vertices[b].kind && a < b);
+      if(a_first) welded.link(b, a); else welded.link(a, b);
+      any = true;
+    }
     if(any)
     {
       for(std::size_t id = 0; id < welded.size(); ++id)
@@ -642,18 +642,16 @@ private:
     Partition& out = *m_out;
     // found in concurrent chunks, kept in piece order
     const std::size_t chunk = 16384;
-    std::vector<std::vector<std::size_t> > found(number_of_chunks(out.pieces.size(), chunk));
-    for_each_chunk(out.pieces.size(), chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
+    const std::vector<std::size_t> degenerate = gather_in_chunk_order<std::size_t>(out.pieces.size(), chunk, m_parallel,
+        [&](std::size_t begin, std::size_t end, std::vector<std::size_t>& found) {
       for(std::size_t k = begin; k < end; ++k)
       {
         const Partition::Piece& p = out.pieces[k];
         // only a piece without area in double can be exactly collinear
         if(p.vertices.size() < 3 || (p.area <= 1e-12 * m_mesh.face_areas[p.face] && is_collinear_polygon(p.vertices)))
-          found[c].push_back(k);
+          found.push_back(k);
       }
     });
-    std::vector<std::size_t> degenerate;
-    for(const std::vector<std::size_t>& k : found) degenerate.insert(degenerate.end(), k.begin(), k.end());
     if(degenerate.empty()) return;
     out.dropped_pieces += degenerate.size();
     std::unordered_map<std::uint64_t, std::size_t> edge_owner;   // directed edge -> piece
