@@ -103,9 +103,12 @@ public:
       }
       for(const Face_cuts::Piece piece : cut.pieces)
       {
-        polygon.clear();
-        for(const Symbolic_vertex& v : piece.vertices) polygon.push_back(place(f, piece.candidate, v));
-        add(out, f, piece.candidate, polygon.data(), polygon.size());
+        // placed where they are kept: a vertex built aside and then copied in stalled on
+        // its barycentric coordinates, written one by one and read back in pairs
+        if(polygon.size() < piece.vertices.size()) polygon.resize(piece.vertices.size());
+        std::size_t size = 0;
+        for(const Symbolic_vertex& v : piece.vertices) place(f, piece.candidate, v, polygon[size++]);
+        add(out, f, piece.candidate, polygon.data(), size);
       }
     }
     return out;
@@ -119,14 +122,16 @@ private:
   };
   typedef std::vector<Polygon_vertex> Polygon;   // one buffer for all the pieces
 
-  Polygon_vertex place(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v) const
+  void place(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v, Polygon_vertex& out) const
   {
     const Candidate_list& list = m_candidates[f];
-    Barycentric b = {{ 0., 0., 0. }};
+    Barycentric& b = out.b;
+    b = {{ 0., 0., 0. }};
     if(v.kind == Symbolic_vertex::CORNER)
     {
       b[v.local] = 1.;
-      return Polygon_vertex{ m_mesh.points[m_mesh.triangles[f][v.local]], b };
+      out.point = m_mesh.points[m_mesh.triangles[f][v.local]];
+      return;
     }
     if(v.kind == Symbolic_vertex::EDGE)
     {
@@ -142,13 +147,14 @@ private:
       const Point_d& pb = m_mesh.points[vb];
       b[ca] = 1. - t;
       b[cb] = t;
-      return Polygon_vertex{ pa + t * (pb - pa), b };
+      out.point = pa + t * (pb - pa);
+      return;
     }
     // the three fields in site order (lists are sorted by site), as stitching orders them
     std::array<std::uint32_t, 3> c = {{ owner, v.other, v.third }};
     std::sort(c.begin(), c.end());
     b = triple_point_barycentric(list[c[0]].value.data(), list[c[1]].value.data(), list[c[2]].value.data());
-    return Polygon_vertex{ m_mesh.point_at(f, b), b };
+    out.point = m_mesh.point_at(f, b);
   }
 
   // the squared distance to the site at barycentric point b of face f: a quadratic form in b
