@@ -1,10 +1,14 @@
 #!/usr/bin/env python3
-"""Issue 12's measurement: this tree's program against a base commit's, interleaved.
+"""This tree's surface_voronoi program against a base commit's, interleaved.
 
 usage: compare_with_base.py --program NEW --base-program OLD --data DIR [--work DIR]
-                            [--repeat 3] [--sections diagram,sites,meshes,lloyd,biharmonic,geodesic]
-                            [--out FILE.md] [--quick]
+                            [--repeat 3] [--new-threads 1]
+                            [--sections diagram,sites,meshes,lloyd,biharmonic,geodesic,threads]
+                            [--out FILE.md | --out -] [--quick]
        compare_with_base.py --build-base COMMIT --base-dir DIR   (a git worktree, Release build)
+
+The report goes to results/compare_with_base.md beside this script unless --out names another
+file (or '-': print only); it is also printed section by section as the runs go.
 
 Each configuration runs the two programs alternately (new, old, new, old, ...) `--repeat`
 times on the same mesh and the same `--random N --seed 1` sites, with `--output` written,
@@ -131,7 +135,8 @@ def main():
     p.add_argument("--sections", default="diagram,sites,meshes,lloyd,biharmonic,geodesic,threads")
     p.add_argument("--new-threads", type=int, default=1,
                    help="--threads for the new program in the comparisons with the base (default 1: the goals are single-threaded)")
-    p.add_argument("--out")
+    p.add_argument("--out", default=os.path.join(HERE, "results", "compare_with_base.md"),
+                   help="markdown report (default: results/compare_with_base.md beside this script; '-': print only)")
     p.add_argument("--quick", action="store_true", help="boot only, one repetition")
     p.add_argument("--build-base")
     p.add_argument("--base-dir")
@@ -230,7 +235,7 @@ def main():
         section("Both cores: the new program on 2 threads (new) against 1 thread (old)", rows,
                 ["compute", "propagation", "cutting", "repair", "wall", "peak_mib"])
     report.append("load average after: %s" % " ".join("%.2f" % x for x in os.getloadavg()))
-    if a.out:
+    if a.out != "-":
         with open(a.out, "w") as f:
             f.write("\n".join(report) + "\n")
 
