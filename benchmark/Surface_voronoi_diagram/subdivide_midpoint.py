@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One 1-to-4 midpoint subdivision of a triangle OFF mesh (issue 12's igea-537k and igea-2M).
+"""One 1-to-4 midpoint subdivision of a triangle OFF mesh (compare_with_base.py's igea-537k and igea-2M).
 
 usage: subdivide_midpoint.py IN.off OUT.off [--times K]
 
