@@ -78,7 +78,9 @@ Biharmonic_options
 /// \f$ L \phi_k = \lambda_k M \phi_k \f$ are the \f$ d \f$ smallest non-zero eigenpairs of the
 /// cotangent Laplacian (one zero eigenvalue per connected component is skipped), so that the
 /// squared Euclidean distance of two embedded points is their truncated squared biharmonic
-/// distance.
+/// distance. On a mesh of several components the zero modes are known (each component's
+/// indicator) and deflated: the eigen-solver is asked only for the \f$ d \f$ non-zero
+/// eigenpairs, so that an assembly of a hundred parts and more works like one part.
 ///
 /// <b>Units.</b> The embedding scales like the mesh, but its squared distances are about an
 /// order of magnitude smaller than squared lengths, by a ratio that depends on the mesh and on
@@ -305,7 +307,8 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   const Eigen::VectorXd& eigenvalues() const { return m_eigenvalues; }
   /// every eigenvalue computed, zero modes included
   const Eigen::VectorXd& computed_eigenvalues() const { return m_all_eigenvalues; }
-  /// every eigenvector computed (M-orthonormal columns, zero modes first), rows in vertex order
+  /// every eigenvector computed (M-orthonormal columns, zero modes first: on a mesh of several
+  /// components, each component's indicator, M-normalized), rows in vertex order
   const Eigen::MatrixXd& computed_eigenvectors() const { return m_eigenvectors; }
   /// the number of zero eigenvalues skipped (= connected components)
   std::size_t number_of_zero_modes() const { return m_zero_modes; }
