@@ -397,9 +397,10 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
 }
 
 /// Computes the `nev` smallest eigenpairs (with a known null space, the `nev` smallest of the
-/// M-orthogonal complement of its span: its zero eigenvalues are not among them). The shift is negative and scaled to the mesh
-/// (eigenvalues scale as 1/size^2), so L - sigma M is positive definite; a shift of
-/// exactly 0 factorizes a singular matrix and returns garbage without complaint.
+/// M-orthogonal complement of its span: its zero eigenvalues are not among them). The shift
+/// is negative and scaled to the mesh (eigenvalues scale as 1/size^2), so L - sigma M is
+/// positive definite; a shift of exactly 0 factorizes a singular matrix and returns garbage
+/// without complaint.
 /// `keep_going`, if set, is asked before every application of the operator; returning
 /// false throws `Eigen_solve_cancelled`.
 template <class LA>
