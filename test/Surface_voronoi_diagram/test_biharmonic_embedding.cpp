@@ -422,3 +422,174 @@ TEST_CASE("biharmonic dimension: the dimension for n sites resolves them, and on
 }
 
 } // namespace svd_test_biharmonic_embedding
+
+namespace svd_test_biharmonic_embedding {
+namespace {
+
+// `count` small closed shells, apart: ellipsoids of `levels`-times subdivided icospheres, each
+// with axes of its own (no two components share an eigenvalue by symmetry)
+void make_many_shells(Mesh& m, std::size_t count, int levels)
+{
+  m.clear();
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    Mesh shell;
+    GEN::make_icosphere(shell, levels, 1.0);
+    const double a = 1 + 0.37 * std::sin(1.3 * double(i)), b = 1 + 0.29 * std::cos(0.7 * double(i)), c = 0.8 + 0.003 * double(i);
+    const K::Vector_3 at(3 * double(i % 15), 3 * double(i / 15), 0);
+    for(auto v : vertices(shell))
+    {
+      const Point p = shell.point(v);
+      shell.point(v) = Point(a * p.x(), b * p.y(), c * p.z()) + at;
+    }
+    CGAL::copy_face_graph(shell, m);
+  }
+}
+
+// the smallest non-zero eigenvalues of each component, by a dense solve on the component
+// alone, all together ascending
+std::vector<double> componentwise_spectrum(const Mesh& m)
+{
+  SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
+  std::vector<double> values;
+  for(std::size_t c = 0; c < im.number_of_components; ++c)
+  {
+    std::vector<int> local(im.points.size(), -1);
+    std::vector<SV::internal::Point_d> points;
+    std::vector<std::array<std::uint32_t, 3> > triangles;
+    for(std::size_t f = 0; f < im.triangles.size(); ++f)
+    {
+      if(std::size_t(im.face_component[f]) != c) continue;
+      std::array<std::uint32_t, 3> t;
+      for(int k = 0; k < 3; ++k)
+      {
+        int& l = local[std::size_t(im.triangles[f][k])];
+        if(l < 0) { l = int(points.size()); points.push_back(im.points[std::size_t(im.triangles[f][k])]); }
+        t[std::size_t(k)] = std::uint32_t(l);
+      }
+      triangles.push_back(t);
+    }
+    Eigen::SparseMatrix<double> L, M;
+    SV::internal::assemble_cotangent_laplacian(points, triangles, L, M);
+    const Eigen::MatrixXd Ld(L), Md(M);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(Ld, Md);
+    for(Eigen::Index k = 1; k < dense.eigenvalues().size(); ++k)   // the first is the component's zero
+      values.push_back(dense.eigenvalues()[k]);
+  }
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+// The oracle of an eigen-solve with the zero modes known: `phi` solves L phi = lambda M phi,
+// is M-orthonormal and M-orthogonal to every component's indicator, and `lambda` are the
+// smallest of the components' own non-zero eigenvalues.
+void check_deflated_eigenpairs(const Eigen::SparseMatrix<double>& L, const Eigen::SparseMatrix<double>& M,
+                               const std::vector<int>& component, std::size_t components,
+                               const Eigen::VectorXd& lambda, const Eigen::MatrixXd& phi, const std::vector<double>& expected)
+{
+  const Eigen::Index d = lambda.size();
+  REQUIRE(phi.cols() == d);
+  const Eigen::MatrixXd G = phi.transpose() * M * phi;
+  CHECK((G - Eigen::MatrixXd::Identity(d, d)).cwiseAbs().maxCoeff() < 1e-8);
+  double worst_indicator = 0, worst_residual = 0, worst_value = 0;
+  for(Eigen::Index k = 0; k < d; ++k)
+  {
+    const Eigen::VectorXd Mphi = M * phi.col(k);
+    std::vector<double> on(components, 0.), mass(components, 0.);
+    for(std::size_t i = 0; i < component.size(); ++i)
+    {
+      on[std::size_t(component[i])] += Mphi[Eigen::Index(i)];
+      mass[std::size_t(component[i])] += M.coeff(Eigen::Index(i), Eigen::Index(i));
+    }
+    for(std::size_t c = 0; c < components; ++c)   // against the M-normalized indicator
+      worst_indicator = (std::max)(worst_indicator, std::abs(on[c]) / std::sqrt(mass[c]));
+    const Eigen::VectorXd r = L * phi.col(k) - lambda[k] * Mphi;
+    worst_residual = (std::max)(worst_residual, r.norm() / (L * phi.col(k)).norm());
+    worst_value = (std::max)(worst_value, std::abs(lambda[k] - expected[std::size_t(k)]) / expected[std::size_t(k)]);
+  }
+  CHECK(worst_indicator < 1e-10);
+  CHECK(worst_residual < 1e-6);
+  CHECK(worst_value < 1e-8);
+}
+
+std::vector<int> vertex_components(const Mesh& m)
+{
+  SV::internal::Indexed_mesh<Mesh> im(m, get(CGAL::vertex_point, m));
+  std::vector<int> component(im.points.size(), -1);
+  for(std::size_t f = 0; f < im.triangles.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+      component[std::size_t(im.triangles[f][k])] = int(im.face_component[f]);
+  return component;
+}
+
+} // namespace
+
+// CAD assemblies come in a hundred parts and more (CGAL's boeing.off: 122): a Lanczos run
+// asked for as many zero eigenvalues at the shift besides the embedding's failed to resolve
+// them. The zero modes are known and deflated; the solver finds only the non-zero ones.
+TEST_CASE("embedding: a mesh of 150 components gets its embedding, the zero modes deflated", "[embedding][components]")
+{
+  Mesh m;
+  make_many_shells(m, 150, 1);   // 42 vertices each
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  const std::vector<int> component = vertex_components(m);
+  const std::vector<double> expected = componentwise_spectrum(m);
+  for(std::size_t d : { std::size_t(10), std::size_t(40) })
+  {
+    INFO("d = " << d);
+    CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(d));
+    REQUIRE(e.number_of_zero_modes() == 150);
+    REQUIRE(e.dimension() == d);
+    REQUIRE(e.computed_eigenvalues().size() == Eigen::Index(150 + d));
+    REQUIRE(e.computed_eigenvectors().cols() == Eigen::Index(150 + d));
+    // the zero modes first: each an M-normalized indicator in L's null space
+    const Eigen::MatrixXd& all = e.computed_eigenvectors();
+    const Eigen::MatrixXd Z = all.leftCols(150);
+    CHECK((Z.transpose() * M * Z - Eigen::MatrixXd::Identity(150, 150)).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((L * Z).cwiseAbs().maxCoeff() < 1e-10 * L.diagonal().maxCoeff());
+    CHECK(e.computed_eigenvalues().head(150).cwiseAbs().maxCoeff() == 0);
+    check_deflated_eigenpairs(L, M, component, 150, e.eigenvalues(), all.rightCols(Eigen::Index(d)), expected);
+    // the coordinates are phi_k / lambda_k
+    auto v = *vertices(m).begin();
+    std::vector<double> c(d);
+    e.coordinates(v, c.data());
+    for(std::size_t k = 0; k < d; ++k)
+      CHECK(c[k] == Approx(all(Eigen::Index(e.vertex_index(v)), Eigen::Index(150 + k)) / e.eigenvalues()[Eigen::Index(k)]).epsilon(1e-12));
+  }
+  // the Krylov-Schur iteration that factorizes large meshes (supernodal), on the same problem
+  SV::internal::Known_null_space null_space;
+  null_space.component = component;
+  null_space.number_of_components = 150;
+  const SV::internal::Eigen_solve_result r = SV::internal::smallest_generalized_eigenpairs_in_order<SV::internal::Supernodal_cholesky_traits>(
+      L, M, 10, 1e-10, 1000, std::function<bool()>(), false, null_space);
+  check_deflated_eigenpairs(L, M, component, 150, r.eigenvalues, r.eigenvectors, expected);
+}
+
+#ifdef CGAL_USE_METIS
+// Above Nested_dissection_ordering::smallest_size the problem is renumbered before the
+// supernodal solve: the components must be renumbered with it.
+TEST_CASE("embedding: a mesh of 160 components above the nested-dissection size", "[embedding][components][numerics]")
+{
+  Mesh m;
+  make_many_shells(m, 160, 3);   // 642 vertices each: 102,720
+  Eigen::SparseMatrix<double> L, M;
+  matrices(m, L, M);
+  REQUIRE(L.rows() >= SV::internal::Nested_dissection_ordering<int>::smallest_size);
+  CGAL::Biharmonic_embedding<Mesh> e(m);
+  REQUIRE(e.number_of_zero_modes() == 160);
+  // the reference: Eigen's simplicial LLT in AMD order, no renumbering (a dense solve of 160
+  // components this size takes minutes); the same problem, another factorization and solver
+  SV::internal::Known_null_space null_space;
+  null_space.component = vertex_components(m);
+  null_space.number_of_components = 160;
+  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > > Reference_LA;
+  const SV::internal::Eigen_solve_result reference = SV::internal::smallest_generalized_eigenpairs_in_order<Reference_LA>(
+      L, M, 10, 1e-10, 1000, std::function<bool()>(), false, null_space);
+  const std::vector<double> expected(reference.eigenvalues.data(), reference.eigenvalues.data() + 10);
+  check_deflated_eigenpairs(L, M, null_space.component, 160, e.eigenvalues(), e.computed_eigenvectors().rightCols(10), expected);
+  check_deflated_eigenpairs(L, M, null_space.component, 160, reference.eigenvalues, reference.eigenvectors, expected);
+}
+#endif
+
+} // namespace svd_test_biharmonic_embedding

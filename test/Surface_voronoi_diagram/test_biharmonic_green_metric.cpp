@@ -132,6 +132,25 @@ TEST_CASE("biharmonic Green metric: the full-spectrum biharmonic distance, in ex
     REQUIRE(components.size() == 2);
     check_values(a, sites);
   }
+  SECTION("150 components (a CAD assembly), most with sites of their own")
+  {
+    // each component's Laplacian is held at one vertex of its own; the eigen-solver of the
+    // embedding needed the zero modes deflated for as many components (issue 52)
+    Mesh m;
+    for(int i = 0; i < 150; ++i)
+    {
+      Mesh shell;
+      GEN::make_icosphere(shell, 0, 1.0 + 0.002 * i);
+      for(auto v : vertices(shell))
+        shell.point(v) = shell.point(v) + K::Vector_3(3 * (i % 15), 3 * (i / 15), 0.1 * std::sin(double(i)));
+      CGAL::copy_face_graph(shell, m);
+    }
+    const std::vector<Location<Mesh> > sites = area_uniform_locations(m, 300, 9);
+    check_values(m, sites);
+    Green green(m);
+    const CGAL::Surface_voronoi_diagram<Mesh, Green> vd(m, green, sites);
+    check_invariants(vd);
+  }
   SECTION("a site at a vertex, one on an edge")
   {
     Mesh m;

@@ -2444,7 +2444,7 @@ TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 nam
   check_success(run_program(dir, { (dir / "strip.off").string(), "--random", "10", "--metric", "geodesic", "--no-refine" }));
 }
 
-TEST_CASE("program: site counts are limited (10,000,000 in all; 256 per face, 2048 with --insert-sites)", "[program][numerics]")
+TEST_CASE("program: site counts are limited (10,000,000 in all; 2048 per face)", "[program][numerics]")
 {
   // Before: --random 100000000 on a tetrahedron ran for minutes without a message, and
   // --random 10000 took 12 s (every site a candidate of every face).
@@ -2463,29 +2463,99 @@ TEST_CASE("program: site counts are limited (10,000,000 in all; 256 per face, 20
         const Run r = run_program(dir, { mesh, flag, n, "--metric", metric });
         CHECK(seconds_since(t0) < 2);
         check_one_line_error(r, 2);
-        CHECK(r.err.find("256 sites per face") != std::string::npos);
-        CHECK(r.err.find("--insert-sites") != std::string::npos);
+        CHECK(r.err.find("2048 sites per face") != std::string::npos);
         const Run inserted = run_program(dir, { mesh, flag, n, "--metric", metric, "--insert-sites" });
         check_one_line_error(inserted, 2);
         CHECK(inserted.err.find("2048 sites per face") != std::string::npos);
       }
   }
-  // the count per face after the draw: 1000 random sites put more than 256 on the largest face
+  // the count per face after the draw: 1000 random sites put more than 256 on the largest
+  // face, and are inserted as vertices, with a note (before: an error)
   const Run drawn = run_program(dir, { mesh, "--random", "1000", "--metric", "euclidean" });
-  check_one_line_error(drawn, 2);
-  CHECK(drawn.err.find("holds more than 256 sites") != std::string::npos);
-  // a sites file with 300 sites in one face: bad input
+  check_success(drawn);
+  CHECK(count_lines(drawn.err) == 1);
+  CHECK(drawn.err.find("note: face") != std::string::npos);
+  CHECK(drawn.err.find("inserted as vertices") != std::string::npos);
+  // a sites file with 300 sites in one face: inserted too; the same output as --insert-sites
   std::vector<V3> many;
   for(int i = 0; i < 300; ++i) many.push_back({{ 0.001 + 0.003 * (i % 20), 0.001 + 0.003 * (i / 20), 0 }});
   write_sites(dir / "many.txt", many);
-  const Run file = run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean" });
-  check_one_line_error(file, 1);
-  CHECK(file.err.find("holds more than 256 sites") != std::string::npos);
-  check_success(run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean", "--insert-sites" }));
+  const Run file = run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean",
+                                      "--output", (dir / "auto.ply").string() });
+  check_success(file);
+  CHECK(file.err.find("holds 300 sites") != std::string::npos);
+  check_success(run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "euclidean", "--insert-sites",
+                                   "--output", (dir / "flag.ply").string() }));
+  CHECK(same_files(dir / "auto.ply", dir / "flag.ply"));
+  // with the geodesic metric the mesh is refined for them instead
+  const Run refined = run_program(dir, { mesh, "--sites", (dir / "many.txt").string(), "--metric", "geodesic" });
+  check_success(refined);
+  CHECK(refined.err.find("refined for the sites") != std::string::npos);
+  CHECK(refined.err.find("inserted") == std::string::npos);
   // within the limits the largest runs finish quickly
   const auto t0 = std::chrono::steady_clock::now();
   check_success(run_program(dir, { mesh, "--random", "650", "--metric", "euclidean" }));
   CHECK(seconds_since(t0) < 5);
+}
+
+// issue 52: a coarse CAD mesh takes many sites without a flag, for every metric (before: "face
+// 2 holds more than 256 sites" with each of them). The sites are inserted (biharmonic,
+// Euclidean, RVD) or the mesh refined for them (geodesic); the output keeps its contract.
+TEST_CASE("program: a 12-triangle cube with 3000 random sites works with every metric", "[program][coarse]")
+{
+  Temp_dir dir;
+  const Soup box = cube();
+  write_mesh(dir / "cube.off", box);
+  const double diag = bbox_diagonal(box.points);
+  for(const std::string metric : { "biharmonic", "euclidean", "rvd", "geodesic" })
+  {
+    INFO("metric " << metric);
+    const auto t0 = std::chrono::steady_clock::now();
+    const Run r = run_program(dir, { (dir / "cube.off").string(), "--random", "3000", "--metric", metric, "--stats",
+                                     "--output", (dir / "out.ply").string(), "--sites-out", (dir / "sites.txt").string() });
+    const double seconds = seconds_since(t0);
+    check_success(r);
+    UNSCOPED_INFO("cube, 3000 sites, " << metric << ": " << seconds << " s");
+    CHECK(seconds < 30);
+    CHECK(r.err.find(metric == "geodesic" ? "refined for the sites" : "inserted as vertices") != std::string::npos);
+    const std::map<std::string, std::string> stats = parse_stats(r.out);
+    CHECK(stat_value(stats, "sites") == 3000);
+    CHECK(stat_value(stats, "empty_cells") == 0);
+    if(metric != "rvd")   // the RVD is not repaired: a cell may come in pieces
+      CHECK(stat_value(stats, "pieces") == 3000);
+    // faces inside one input triangle, covering it exactly (the areas sum to the cube's)
+    const Arrangement_ply a = read_arrangement(dir / "out.ply");
+    const Arrangement_summary s = check_arrangement(a, box, 3000);
+    CHECK(s.labels.count(-1) == 0);
+    CHECK(s.labels.size() == 3000);   // every cell non-empty
+    const std::vector<V3> sites = read_sites_out(dir / "sites.txt");
+    REQUIRE(sites.size() == 3000);
+    check_sites_in_own_cells(a, sites, 1e-9 * diag);
+    if(metric == "euclidean" || metric == "rvd")
+    {
+      // the brute-force nearest site, at each output face's centroid (away from ties)
+      std::size_t wrong = 0, checked = 0;
+      for(std::size_t f = 0; f < a.faces.size(); ++f)
+      {
+        V3 c = {{ 0, 0, 0 }};
+        for(std::size_t v : a.faces[f])
+          for(int k = 0; k < 3; ++k) c[std::size_t(k)] += a.vertices[v][std::size_t(k)] / double(a.faces[f].size());
+        std::vector<std::pair<double, int> > d;
+        for(std::size_t i = 0; i < sites.size(); ++i) d.emplace_back(distance(c, sites[i]), int(i));
+        std::partial_sort(d.begin(), d.begin() + 2, d.end());
+        if(d[1].first - d[0].first < 1e-9 * diag) continue;
+        ++checked;
+        wrong += (d[0].second != a.sites[f]);
+      }
+      CHECK(checked > a.faces.size() / 2);
+      CHECK(wrong == 0);
+    }
+    // --sites-out reads back to the same diagram, bit for bit
+    const Run again = run_program(dir, { (dir / "cube.off").string(), "--sites", (dir / "sites.txt").string(), "--metric", metric,
+                                         "--output", (dir / "again.ply").string() });
+    check_success(again);
+    CHECK(same_files(dir / "out.ply", dir / "again.ply"));
+  }
 }
 
 TEST_CASE("program: the default biharmonic dimension is lowered on small meshes, with a note", "[program][numerics]")

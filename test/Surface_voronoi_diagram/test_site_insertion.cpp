@@ -2,8 +2,15 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/refinement.h>
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
+
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <chrono>
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
 namespace svd_test_site_insertion {
@@ -90,6 +97,149 @@ TEST_CASE("insertion: the diagram on the augmented mesh satisfies the invariants
   check_invariants(vd);
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(vd.site_of(r.site_vertices[i]) == i);
+}
+
+namespace {
+
+// The unit cube as 12 triangles: a coarse CAD mesh.
+Mesh coarse_cube()
+{
+  Mesh m;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                        Point(0, 1, 1), Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), m);
+  CGAL::Polygon_mesh_processing::triangulate_faces(m);
+  return m;
+}
+
+// The labels of `samples` area-uniform points of `m` against the brute-force nearest of
+// `site_points` (points whose two nearest sites tie within rounding skipped): {checked, wrong}.
+template <class Diagram>
+std::pair<std::size_t, std::size_t> nearest_site_labels(const Diagram& vd, const Mesh& m, const std::vector<Point>& site_points,
+                                                        std::size_t samples, unsigned seed)
+{
+  std::size_t wrong = 0, checked = 0;
+  for(const auto& l : area_uniform_locations(m, samples, seed))
+  {
+    const Point p = point_of(l, m);
+    std::vector<std::pair<double, std::size_t> > d;
+    for(std::size_t i = 0; i < site_points.size(); ++i) d.emplace_back(CGAL::to_double(CGAL::squared_distance(p, site_points[i])), i);
+    std::partial_sort(d.begin(), d.begin() + 2, d.end());
+    if(d[1].first - d[0].first < 1e-12 * (1 + d[0].first)) continue;
+    ++checked;
+    wrong += (vd.site_of(l) != d[0].second);
+  }
+  return { checked, wrong };
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+} // namespace
+
+// issue 52: a 12-triangle cube with 3,000 sites (250 per face). The constructor computes the
+// diagram of the mesh it is given, whatever the sites per face (each face is cut among its
+// candidates, at a cost above quadratic in their number); the manual's way for a coarse mesh is
+// to insert the sites (the embeddings then have vertices between them) or, for the geodesic
+// metric, to refine. Both ways are checked here, for each metric, against oracles: the
+// brute-force nearest site (Euclidean), and the invariants (areas add up, every cell non-empty
+// and one piece, each site owns its own location).
+TEST_CASE("coarse mesh: a 12-triangle cube with 3000 sites, every metric", "[insertion][coarse]")
+{
+  const Mesh m = coarse_cube();
+  REQUIRE(num_faces(m) == 12);
+  const auto sites = SV::random_sites(m, 3000, CGAL::parameters::random_seed(0));
+  REQUIRE(sites.size() == 3000);
+  std::vector<Point> site_points;
+  for(const auto& l : sites) site_points.push_back(point_of(l, m));
+  typedef SV::Euclidean_embedding<Mesh> Euclidean;
+
+  SECTION("Euclidean and RVD on the cube as it is: the brute-force nearest site")
+  {
+    for(bool rvd : { false, true })
+    {
+      INFO((rvd ? "rvd" : "euclidean"));
+      Euclidean e(m);
+      const auto t0 = std::chrono::steady_clock::now();
+      CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, sites,
+          SV::parameters::candidate_selection(rvd ? SV::Candidate_selection::GLOBAL_NEAREST : SV::Candidate_selection::PROPAGATION));
+      UNSCOPED_INFO("cube, 3000 sites, " << (rvd ? "rvd" : "euclidean") << " on the cube: " << seconds_since(t0) << " s");
+      const auto [checked, wrong] = nearest_site_labels(vd, m, site_points, 20000, 5);
+      CHECK(checked > 19000);
+      CHECK(wrong == 0);
+      if(!rvd)
+        check_invariants(vd);
+    }
+  }
+  SECTION("the sites inserted: Euclidean, biharmonic, geodesic")
+  {
+    const auto r = SV::insert_sites(m, sites);
+    REQUIRE(r.site_vertices.size() == 3000);
+    {
+      Euclidean e(r.mesh);
+      CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(r.mesh, e, r.site_vertices);
+      check_invariants(vd);
+      // the same metric on a finer triangulation of the same planes: the nearest site still
+      const auto [checked, wrong] = nearest_site_labels(vd, r.mesh, site_points, 20000, 6);
+      CHECK(checked > 19000);
+      CHECK(wrong == 0);
+    }
+    {
+      CGAL::Biharmonic_embedding<Mesh> e(r.mesh, SV::parameters::embedding_dimension(SV::biharmonic_dimension_for_sites(3000)));
+      const auto t0 = std::chrono::steady_clock::now();
+      CGAL::Surface_voronoi_diagram<Mesh> vd(r.mesh, e, r.site_vertices);
+      UNSCOPED_INFO("biharmonic on the augmented cube: " << seconds_since(t0) << " s");
+      check_invariants(vd);
+      CHECK(vd.statistics().empty_cells == 0);
+    }
+    {
+      SV::Geodesic_metric<Mesh> g(r.mesh);
+      CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > vd(r.mesh, g, r.site_vertices);
+      check_invariants(vd);
+    }
+  }
+  SECTION("geodesic: on the cube as it is, and refined for the sites")
+  {
+    {
+      SV::Geodesic_metric<Mesh> g(m);
+      const auto t0 = std::chrono::steady_clock::now();
+      CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > vd(m, g, sites);
+      UNSCOPED_INFO("geodesic on the cube: " << seconds_since(t0) << " s");
+      check_invariants(vd);
+    }
+    Mesh refined;
+    const SV::Refined_sites<Mesh> r = SV::refine_for_sites(m, sites, refined);
+    REQUIRE(!r.vertex_limit_reached);
+    CHECK(r.edges_split > 0);
+    SV::Geodesic_metric<Mesh> g(refined);
+    CGAL::Surface_voronoi_diagram<Mesh, SV::Geodesic_metric<Mesh> > vd(refined, g, r.sites);
+    check_invariants(vd);
+    // on a cube's face the geodesic distance near a site is the Euclidean one: a point much
+    // nearer one site than any other (half the spacing against twice it) is in that cell
+    std::size_t checked = 0, wrong = 0;
+    for(const auto& l : area_uniform_locations(refined, 5000, 7))
+    {
+      const Point p = point_of(l, refined);
+      std::vector<double> d;
+      for(const Point& s : site_points) d.push_back(CGAL::to_double(CGAL::squared_distance(p, s)));
+      const std::size_t nearest = std::size_t(std::min_element(d.begin(), d.end()) - d.begin());
+      std::nth_element(d.begin(), d.begin() + 1, d.end());
+      if(d[1] < 4 * d[0]) continue;
+      ++checked;
+      wrong += vd.site_of(l) != nearest;
+    }
+    CHECK(checked > 100);
+    CHECK(wrong == 0);
+  }
+  SECTION("biharmonic on the cube as it is: the largest dimension it allows")
+  {
+    CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m)));
+    const auto t0 = std::chrono::steady_clock::now();
+    CGAL::Surface_voronoi_diagram<Mesh> vd(m, e, sites);
+    UNSCOPED_INFO("biharmonic (d = 6) on the cube: " << seconds_since(t0) << " s");
+    check_invariants(vd);
+  }
 }
 
 } // namespace svd_test_site_insertion

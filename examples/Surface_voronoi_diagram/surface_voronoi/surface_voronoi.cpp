@@ -82,12 +82,14 @@ namespace {
 // The program's limits (the manual's troubleshooting section lists them).
 // The most sites --random, --blue-noise or a sites file may give.
 const long long max_sites = 10000000;
-// The most sites one input face may hold. Without --insert-sites, a face is cut among its
-// candidate sites at a cost that grows faster than their square (measured on a cube: 256 per
-// face take 0.3 s with the Euclidean metric and 1.6 s with the geodesic one; 2,500 per face
-// on a tetrahedron take 12 s). With --insert-sites every site becomes a vertex, but each is
-// inserted by a scan of its face's pieces (2,500 per face: 0.5 s; 25,000: over 30 s; 11,000
-// sites on a tetrahedron take 9 s with the geodesic metric).
+// The most sites one input face may hold before the sites are inserted. A face is cut among
+// its candidate sites at a cost that grows faster than their square (measured on a cube: 256
+// per face take 0.3 s with the Euclidean metric and 1.6 s with the geodesic one; 2,500 per
+// face on a tetrahedron take 12 s); beyond this many, the program inserts the sites as
+// vertices (as --insert-sites does), or refines the mesh for them (the geodesic metric), so
+// that a coarse mesh takes many sites without a flag. An inserted site is placed by a scan of
+// its face's pieces (2,500 per face: 0.5 s; 25,000: over 30 s; 11,000 sites on a tetrahedron
+// take 9 s with the geodesic metric): the second limit.
 const std::size_t max_sites_per_face = 256;
 const std::size_t max_inserted_sites_per_face = 2048;
 // The geodesic refinement's cap: at most this many vertices per input vertex and site (the
@@ -628,10 +630,11 @@ int run_main(int argc, char** argv)
   }();
   std::vector<Point> site_points;
   std::vector<double> weights;
-  const std::size_t per_face_limit = args.insert_sites ? max_inserted_sites_per_face : max_sites_per_face;
-  const std::string per_face_advice = args.insert_sites
-      ? " (the limit per input face with --insert-sites); use a finer mesh or fewer sites"
-      : " (the limit per input face without --insert-sites); use --insert-sites, a finer mesh or fewer sites";
+  // the geodesic metric refines a mesh too coarse for the sites: its faces' counts are
+  // checked after the refinement; the other metrics insert the sites when a face holds more
+  // than max_sites_per_face (below)
+  const bool refines_for_sites = args.metric == "geodesic" && !args.insert_sites && !args.no_refine;
+  const std::string per_face_advice = " (the limit per input face, the sites inserted as vertices); use a finer mesh or fewer sites";
   if(!args.sites.empty())
   {
     std::vector<Site_record> records;
@@ -673,12 +676,12 @@ int run_main(int argc, char** argv)
   }
   else
   {
-    // a face cannot hold more than max_sites_per_face sites: fail before drawing them
+    // a face cannot hold more than max_inserted_sites_per_face sites: fail before drawing them
     const long long count = args.random >= 0 ? args.random : args.blue_noise;
     const std::string option = std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(count);
-    if(std::size_t(count) > per_face_limit * num_faces(mesh))
+    if(std::size_t(count) > max_inserted_sites_per_face * num_faces(mesh))
       fail(2, option + ": more than "
-              + std::to_string(per_face_limit) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
+              + std::to_string(max_inserted_sites_per_face) + " sites per face of a mesh of " + std::to_string(num_faces(mesh)) + " faces"
               + per_face_advice);
     // First the sites on the feature lines: the breaklines and, for a remesh (--dual), the
     // border, evenly spaced for `count` sites in all; then the others, drawn. The feature
@@ -715,18 +718,34 @@ int run_main(int argc, char** argv)
       site_points.push_back(q);
     }
   }
-  {
+  // the sites of the fullest input face (the geodesic metric's are checked on the refined
+  // mesh): beyond max_sites_per_face they are inserted, beyond max_inserted_sites_per_face
+  // it is an error
+  auto check_sites_per_face = [&](const std::vector<Location>& sites, bool refined) {
     std::map<Mesh::Face_index, std::size_t> per_face;
-    for(const Location& l : locations)
+    std::pair<std::size_t, Mesh::Face_index> fullest(0, Mesh::Face_index());
+    for(const Location& l : sites)
+      fullest = (std::max)(fullest, std::make_pair(++per_face[l.first], l.first));
+    const std::size_t limit = refined ? max_sites_per_face : max_inserted_sites_per_face;
+    if(fullest.first > limit)
     {
-      const std::size_t k = ++per_face[l.first];
-      if(k <= per_face_limit) continue;
-      const std::string what = "face " + std::to_string(std::size_t(l.first)) + " holds more than "
-                               + std::to_string(per_face_limit) + " sites" + per_face_advice;
+      const std::string what = (refined ? "face " + std::to_string(std::size_t(fullest.second)) + " of the mesh refined for the sites"
+                                        : "face " + std::to_string(std::size_t(fullest.second)))
+                               + " holds more than " + std::to_string(limit) + " sites"
+                               + (refined ? std::string(" (the limit per face of the refined mesh); use --insert-sites, a finer mesh or fewer sites")
+                                          : per_face_advice);
       if(!lines.empty()) fail(1, args.sites + ": " + what);
-      fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(locations.size()) + ": " + what);
+      fail(2, std::string(args.random >= 0 ? "--random " : "--blue-noise ") + std::to_string(sites.size()) + ": " + what);
     }
-  }
+    if(!refined && !args.insert_sites && fullest.first > max_sites_per_face)
+    {
+      args.insert_sites = true;
+      std::cerr << "surface_voronoi: note: face " << std::size_t(fullest.second) << " holds " << fullest.first << " sites, more than "
+                << max_sites_per_face << ": the sites are inserted as vertices (as with --insert-sites)" << std::endl;
+    }
+  };
+  if(!refines_for_sites)
+    check_sites_per_face(locations, false);
   // The library's preconditions, checked here so that every build gives one readable line
   // (what the reader has checked on the soup, validate_input() does not check again); part
   // of the loading, as the copy it checks on, which every stage shares
@@ -949,6 +968,7 @@ int run_main(int argc, char** argv)
                   + " vertices (the input's and at most " + std::to_string(refinement_vertices_per_element)
                   + " more per input vertex and site, at most " + std::to_string(refinement_max_vertices)
                   + " more; thin faces need many): use --no-refine, --insert-sites or fewer sites");
+        check_sites_per_face(r.sites, true);
         if(r.edges_split > 0)
         {
           work = &refined;

@@ -78,7 +78,9 @@ Biharmonic_options
 /// \f$ L \phi_k = \lambda_k M \phi_k \f$ are the \f$ d \f$ smallest non-zero eigenpairs of the
 /// cotangent Laplacian (one zero eigenvalue per connected component is skipped), so that the
 /// squared Euclidean distance of two embedded points is their truncated squared biharmonic
-/// distance.
+/// distance. On a mesh of several components the zero modes are known (each component's
+/// indicator) and deflated: the eigen-solver is asked only for the \f$ d \f$ non-zero
+/// eigenpairs, so that an assembly of a hundred parts and more works like one part.
 ///
 /// <b>Units.</b> The embedding scales like the mesh, but its squared distances are about an
 /// order of magnitude smaller than squared lengths, by a ratio that depends on the mesh and on
@@ -305,7 +307,8 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
   const Eigen::VectorXd& eigenvalues() const { return m_eigenvalues; }
   /// every eigenvalue computed, zero modes included
   const Eigen::VectorXd& computed_eigenvalues() const { return m_all_eigenvalues; }
-  /// every eigenvector computed (M-orthonormal columns, zero modes first), rows in vertex order
+  /// every eigenvector computed (M-orthonormal columns, zero modes first: on a mesh of several
+  /// components, each component's indicator, M-normalized), rows in vertex order
   const Eigen::MatrixXd& computed_eigenvectors() const { return m_eigenvectors; }
   /// the number of zero eigenvalues skipped (= connected components)
   std::size_t number_of_zero_modes() const { return m_zero_modes; }
@@ -334,13 +337,17 @@ private:
     SVi::assemble_cotangent_laplacian(mesh->points, mesh->triangles, L, M);
     timer.stop("assembly");
 
-    // One zero eigenvalue per connected component: skip all of them.
+    // One zero eigenvalue per connected component: skip all of them. With one component the
+    // eigen-solver finds it with the others; with several, their eigenvectors (the components'
+    // indicators) are known, and the solver works in the complement of their span: a cluster
+    // of a hundred zero eigenvalues at the shift is more than a Lanczos run resolves.
     m_zero_modes = mesh->number_of_components;
-    const Eigen::Index nev = static_cast<Eigen::Index>(dimension + m_zero_modes);
-    CGAL_precondition_msg(static_cast<std::size_t>(nev) < mesh->number_of_vertices(),
+    const bool known_zero_modes = m_zero_modes > 1;
+    const Eigen::Index nev = static_cast<Eigen::Index>(dimension + (known_zero_modes ? 0 : m_zero_modes));
+    CGAL_precondition_msg(dimension + m_zero_modes < mesh->number_of_vertices(),
                           "the mesh has too few vertices for an embedding of this dimension (see maximum_dimension())");
     // also in release builds: the eigen-solver cannot give more eigenpairs than vertices
-    if(static_cast<std::size_t>(nev) >= mesh->number_of_vertices())
+    if(dimension + m_zero_modes >= mesh->number_of_vertices())
     {
       const std::size_t largest = mesh->number_of_vertices() > m_zero_modes + 1 ? mesh->number_of_vertices() - m_zero_modes - 1 : 0;
       throw Surface_voronoi::Input_error("the mesh has too few vertices for an embedding of dimension " + std::to_string(dimension)
@@ -351,6 +358,21 @@ private:
     if(callback && !callback(0.1)) { cancel(); return; }
     // the rounding noise of a zero eigenvalue (see below), before the solve takes L and M
     const double noise = 0x1p-52 * L.diagonal().sum() / M.diagonal().sum();
+    SVi::Known_null_space null_space;
+    std::vector<double> component_mass;   // 1^T M 1 over each component
+    if(known_zero_modes)
+    {
+      // a vertex's component is its faces' (a vertex in no face has a zero row in L and M,
+      // which the factorization refuses before this matters)
+      null_space.number_of_components = static_cast<int>(m_zero_modes);
+      null_space.component.assign(mesh->number_of_vertices(), 0);
+      for(std::size_t f = 0; f < mesh->triangles.size(); ++f)
+        for(int k = 0; k < 3; ++k)
+          null_space.component[static_cast<std::size_t>(mesh->triangles[f][k])] = static_cast<int>(mesh->face_component[f]);
+      component_mass.assign(m_zero_modes, 0.);
+      for(std::size_t i = 0; i < mesh->number_of_vertices(); ++i)
+        component_mass[static_cast<std::size_t>(null_space.component[i])] += M.diagonal()[static_cast<Eigen::Index>(i)];
+    }
 
     // progress during the solve: the number of operator applications, on a saturating scale
     long applications = 0;
@@ -365,7 +387,7 @@ private:
     {
       r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(std::move(L), std::move(M), nev, tolerance,
                                                                        static_cast<Eigen::Index>(restarts), keep_going,
-                                                                       SVi::use_threads<ConcurrencyTag>());
+                                                                       SVi::use_threads<ConcurrencyTag>(), null_space);
     }
     catch(const SVi::Eigen_solve_cancelled&)
     {
@@ -379,6 +401,8 @@ private:
       times->counts["concurrent_subtrees"] += double(r.concurrent_subtrees);
     }
 
+    if(known_zero_modes)
+      put_known_zero_modes_first(null_space, component_mass, r);
     m_all_eigenvalues = r.eigenvalues;
     const double lambda_first = r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes)];
     const double lambda_last_zero = m_zero_modes > 0 ? r.eigenvalues[static_cast<Eigen::Index>(m_zero_modes) - 1] : 0.;
@@ -387,7 +411,10 @@ private:
     // known to about 2^-52 trace(L) / trace(M), which caps with huge cotangents (a cap of
     // height 1e-12 in a unit square) push above 1e-6 lambda_1. Zero within that noise, with
     // lambda_1 a hundred times above it, passes too (valid input passing before is unchanged).
-    const bool separated = lambda_first > 0 && std::abs(lambda_last_zero) < 1e-6 * lambda_first;
+    // Zero modes known exactly: the smallest eigenvalue computed must stand clear of zero (a
+    // component that is nearly two, for the Laplacian, has one within rounding of zero).
+    const bool separated = lambda_first > 0 && std::abs(lambda_last_zero) < 1e-6 * lambda_first
+                           && (!known_zero_modes || lambda_first > 100 * noise);
     const bool zero_within_noise = lambda_first > 100 * noise && std::abs(lambda_last_zero) < noise;
     if(!separated && !zero_within_noise)
       throw Surface_voronoi::Numerical_error("the spectrum does not have the expected "
@@ -406,6 +433,26 @@ private:
     }
     m_eigenvectors = std::move(r.eigenvectors);
     if(callback) callback(1.);
+  }
+
+  // the zero modes, exactly, before the computed eigenpairs: each component's indicator,
+  // M-normalized, with eigenvalue 0
+  void put_known_zero_modes_first(const Surface_voronoi::internal::Known_null_space& null_space,
+                                  const std::vector<double>& area, Surface_voronoi::internal::Eigen_solve_result& r) const
+  {
+    const std::size_t n = null_space.component.size();
+    const Eigen::Index c = static_cast<Eigen::Index>(m_zero_modes), d = r.eigenvalues.size();
+    Eigen::VectorXd values = Eigen::VectorXd::Zero(c + d);
+    values.tail(d) = r.eigenvalues;
+    Eigen::MatrixXd vectors = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), c + d);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const int k = null_space.component[i];
+      vectors(static_cast<Eigen::Index>(i), k) = 1 / std::sqrt(area[static_cast<std::size_t>(k)]);
+    }
+    vectors.rightCols(d) = r.eigenvectors;
+    r.eigenvalues = std::move(values);
+    r.eigenvectors = std::move(vectors);
   }
 
   void cancel()

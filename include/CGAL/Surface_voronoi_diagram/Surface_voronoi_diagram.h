@@ -240,6 +240,14 @@ public:
   ///   \cgalParamSectionEnd
   /// \cgalNamedParamsEnd
   ///
+  /// The diagram is that of the mesh given, whatever the number of sites in a face; a face is
+  /// cut among the sites that reach it, at a cost that grows faster than the square of their
+  /// number. On a coarse mesh with many sites per face (hundreds: a 12-triangle cube with
+  /// 3,000 sites), insert the sites first (`Surface_voronoi::insert_sites()`, then the metric
+  /// and the diagram on the augmented mesh) or, for the geodesic metric, refine the mesh for
+  /// them (`Surface_voronoi::refine_for_sites()`): an embedding or a distance sampled at
+  /// vertices also needs vertices between the sites.
+  ///
   /// With an embedding (`SurfaceVoronoiEmbedding`) the constructor reads the coordinates of
   /// every vertex once; a lazy metric (`SurfaceVoronoiLazyMetric`) is told the sites with
   /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not

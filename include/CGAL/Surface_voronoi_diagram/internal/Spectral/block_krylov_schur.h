@@ -40,6 +40,12 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
+/// the whole space: random vectors are taken as they are
+struct Whole_space
+{
+  void operator()(Eigen::MatrixXd&) const {}
+};
+
 struct Block_krylov_schur_result
 {
   Eigen::VectorXd values;    // the largest eigenvalues of the operator, descending
@@ -53,10 +59,12 @@ struct Block_krylov_schur_result
 /// `Eigen::Ref<const Eigen::MatrixXd>`, Y an `Eigen::MatrixXd` of X's size). Finds the `count`
 /// largest eigenpairs to a residual of `tolerance` times the eigenvalue, with a basis of at
 /// most `basis_size` vectors grown `block` at a time, from `seed`'s random start block.
-template <class Apply, class Mass>
+/// `to_space(X)` maps random vectors, in place, into the space the operator works in (the
+/// complement of a known null space).
+template <class Apply, class Mass, class To_space = Whole_space>
 Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mass, Eigen::Index n, Eigen::Index count,
                                              Eigen::Index block, Eigen::Index basis_size, double tolerance,
-                                             long max_restarts, unsigned long seed)
+                                             long max_restarts, unsigned long seed, const To_space& to_space = To_space())
 {
   using Eigen::Index;
   using Eigen::MatrixXd;
@@ -157,6 +165,7 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
             break;
           }
           z.col(0) = rng.random_vec(n);
+          to_space(z);
           recorded = false;
         }
         Z.col(j) = z.col(0);
@@ -170,6 +179,7 @@ Block_krylov_schur_result block_krylov_schur(const Apply& apply, const Mass& mas
   // the start block
   for(Index j = 0; j < b; ++j)
     Z.col(j) = rng.random_vec(n);
+  to_space(Z);
   orthonormalize(0);
   V.leftCols(b) = Z;
   Index p = 0;

@@ -53,6 +53,37 @@ namespace internal {
 /// by users.
 struct Eigen_solve_cancelled {};
 
+/// The known null space of L: one zero eigenvalue per connected component, its eigenvector
+/// the component's indicator (L's rows sum to zero over a component). With many components
+/// (CAD assemblies: a hundred and more) a Krylov method asked for them along with the smallest
+/// non-zero eigenpairs must resolve a cluster of that many eigenvalues at the shift, and fails;
+/// they are known, so the solver works in the M-orthogonal complement of their span instead:
+/// `project()` takes away a vector's M-weighted mean over each component. Empty (nothing
+/// projected) when the caller lets the solver find the zero modes (one component).
+struct Known_null_space
+{
+  std::vector<int> component;   // of each row; empty: no known null space
+  int number_of_components = 0;
+
+  bool empty() const { return component.empty(); }
+
+  /// y := y - sum_c 1_c (1_c^T M y) / (1_c^T M 1_c), M diagonal given by `mass`
+  void project(const double* mass, double* y) const
+  {
+    if(empty()) return;
+    std::vector<double> weighted(static_cast<std::size_t>(number_of_components), 0.), total(weighted.size(), 0.);
+    for(std::size_t i = 0; i < component.size(); ++i)
+    {
+      weighted[static_cast<std::size_t>(component[i])] += mass[i] * y[i];
+      total[static_cast<std::size_t>(component[i])] += mass[i];
+    }
+    for(std::size_t c = 0; c < weighted.size(); ++c)
+      weighted[c] /= total[c];
+    for(std::size_t i = 0; i < component.size(); ++i)
+      y[i] -= weighted[static_cast<std::size_t>(component[i])];
+  }
+};
+
 /// The operator y = (A - sigma B)^{-1} x that Spectra's shift-invert mode needs, minus the
 /// eigenpairs already found. Spectra's own `SymShiftInvert` factorizes with SparseLU; a
 /// symmetric factorization (LDLT by default) is about twice as fast with half the memory,
@@ -128,6 +159,15 @@ public:
     m_deflation_weights = (eigenvalues.array() - m_sigma).inverse().matrix();
   }
 
+  /// `null_space` and `mass` (B's diagonal; both referred to, not copied) project the
+  /// null space out of every result: the operator then works in the B-orthogonal complement
+  /// of A's known null space
+  void set_null_space(const Known_null_space& null_space, const double* mass)
+  {
+    m_null_space = &null_space;
+    m_mass = mass;
+  }
+
   void perform_op(const Scalar* x, Scalar* y) const
   {
     if(m_keep_going && !m_keep_going()) throw Eigen_solve_cancelled();
@@ -152,6 +192,10 @@ public:
       const Eigen::VectorXd c = (m_deflation_vectors->transpose() * xv).cwiseProduct(m_deflation_weights);
       yv.noalias() -= *m_deflation_vectors * c;
     }
+    // (A - sigma B)^{-1} B maps the null space to itself: projecting it out keeps the
+    // operator self-adjoint in the B inner product, and rounding cannot bring it back
+    if(m_null_space != nullptr && !m_null_space->empty())
+      m_null_space->project(m_mass, y);
   }
 
 private:
@@ -167,6 +211,8 @@ private:
   bool m_factorized = false;
   const Eigen::MatrixXd* m_deflation_vectors = nullptr;
   Eigen::VectorXd m_deflation_weights;
+  const Known_null_space* m_null_space = nullptr;
+  const double* m_mass = nullptr;
 };
 
 /// The product by B (the mass matrix) that Spectra's Lanczos takes five to six times per
@@ -241,16 +287,24 @@ inline Numerical_error not_converged(Eigen::Index converged, Eigen::Index count,
 /// from Spectra's own start vector in the first round and from a random one after.
 template <class Op>
 void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index ncv, double sigma, double tol,
-                   Eigen::Index max_iterations, int round, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors,
-                   Eigen_solve_result& r)
+                   Eigen::Index max_iterations, int round, const Known_null_space& null_space, const double* mass,
+                   Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors, Eigen_solve_result& r)
 {
   const Eigen::Index n = op.rows();
   Spectra::SymGEigsShiftSolver<Op, Mass_product, Spectra::GEigsMode::ShiftInvert> solver(op, bop, count, ncv, sigma);
   Eigen::Index converged = 0;
   try
   {
-    if(round == 0)
+    if(round == 0 && null_space.empty())
       solver.init();
+    else if(round == 0)
+    {
+      // Spectra's own start vector, in the complement of the known null space
+      Spectra::SimpleRandom<double> rng(0);
+      Eigen::VectorXd start = rng.random_vec(n);
+      null_space.project(mass, start.data());
+      solver.init(start.data());
+    }
     else
     {
       // A later round must not start where the first did: the first start vector's part in
@@ -258,7 +312,8 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
       // deflated, so a Krylov space grown from it again is blind to the other copies of a
       // repeated eigenvalue (icosphere, 642 vertices: 8 of d = 10..40 missed one).
       Spectra::SimpleRandom<double> rng(static_cast<unsigned long>(round) + 1);   // seeds 0 and 1 are the first's
-      const Eigen::VectorXd start = rng.random_vec(n);
+      Eigen::VectorXd start = rng.random_vec(n);
+      null_space.project(mass, start.data());
       solver.init(start.data());
     }
     converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol, Spectra::SortRule::SmallestAlge);
@@ -291,8 +346,8 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
 /// orthogonalization, matrix products against a wider basis, cost more than the solves saved.
 template <class Op>
 void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index ncv, double sigma, double tol,
-                        Eigen::Index max_iterations, unsigned long seed, bool deflated, Eigen::VectorXd& new_values,
-                        Eigen::MatrixXd& new_vectors, Eigen_solve_result& r)
+                        Eigen::Index max_iterations, unsigned long seed, bool deflated, const Known_null_space& null_space,
+                        const double* mass_diagonal, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors, Eigen_solve_result& r)
 {
   const Eigen::Index n = op.rows();
   // a column of an Eigen::Ref<const MatrixXd> is contiguous: the products read it in place
@@ -312,7 +367,12 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
     }
   };
   const Eigen::Index basis = (std::max)(ncv, count + 2);
-  const Block_krylov_schur_result k = block_krylov_schur(apply, mass, n, count, 1, basis, tol, static_cast<long>(max_iterations), seed);
+  // random start vectors in the complement of the known null space
+  auto project = [&](Eigen::MatrixXd& X) {
+    for(Eigen::Index j = 0; j < X.cols(); ++j)
+      null_space.project(mass_diagonal, X.col(j).data());
+  };
+  const Block_krylov_schur_result k = block_krylov_schur(apply, mass, n, count, 1, basis, tol, static_cast<long>(max_iterations), seed, project);
   r.iterations += k.restarts;
   r.operations += k.applications;
   ++r.rounds;
@@ -336,9 +396,11 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
   new_vectors = k.vectors;
 }
 
-/// Computes the `nev` smallest eigenpairs. The shift is negative and scaled to the mesh
-/// (eigenvalues scale as 1/size^2), so L - sigma M is positive definite; a shift of
-/// exactly 0 factorizes a singular matrix and returns garbage without complaint.
+/// Computes the `nev` smallest eigenpairs (with a known null space, the `nev` smallest of the
+/// M-orthogonal complement of its span: its zero eigenvalues are not among them). The shift
+/// is negative and scaled to the mesh (eigenvalues scale as 1/size^2), so L - sigma M is
+/// positive definite; a shift of exactly 0 factorizes a singular matrix and returns garbage
+/// without complaint.
 /// `keep_going`, if set, is asked before every application of the operator; returning
 /// false throws `Eigen_solve_cancelled`.
 template <class LA>
@@ -348,11 +410,13 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
                                                             double tolerance,
                                                             Eigen::Index max_iterations,
                                                             const std::function<bool()>& keep_going,
-                                                            bool parallel = false)
+                                                            bool parallel = false,
+                                                            const Known_null_space& null_space = Known_null_space())
 {
   const Fixed_dense_blocking same_bits_on_every_machine;   // the Ritz pairs' and restarts' products too
   const Eigen::Index n = L.rows();
-  CGAL_precondition_msg(nev >= 1 && nev < n, "more vertices than eigenpairs are needed");
+  CGAL_precondition_msg(nev >= 1 && nev + null_space.number_of_components < n, "more vertices than eigenpairs are needed");
+  CGAL_precondition(null_space.empty() || static_cast<Eigen::Index>(null_space.component.size()) == n);
 
   const double mean_l = L.diagonal().mean();
   const double mean_m = M.diagonal().mean();
@@ -366,6 +430,13 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   std::unique_ptr<Op> op(new Op(L, M, keep_going, parallel));
   BOp bop(M);
   op->set_shift(sigma);
+  // the projection on the known null space's complement takes M's diagonal (M is lumped)
+  Eigen::VectorXd mass;
+  if(!null_space.empty())
+  {
+    mass = M.diagonal();
+    op->set_null_space(null_space, mass.data());
+  }
 
   Eigen_solve_result r;
   r.concurrent_subtrees = op->concurrent_subtrees();
@@ -377,7 +448,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     // The first run asks for everything; later runs only check for missed eigenvalues
     // below the largest one kept, so a few suffice.
     const Eigen::Index found = vectors.cols();
-    const Eigen::Index room = n - found - 1;
+    const Eigen::Index room = n - null_space.number_of_components - found - 1;
     const Eigen::Index want = (std::min<Eigen::Index>)((round == 0) ? nev : (std::min<Eigen::Index>)(nev, 4), room);
     if(want < 1)
       break;
@@ -385,10 +456,10 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     auto solve = [&](Eigen::Index count, Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
       ncv = (std::min)(n, ncv);
       if constexpr(std::is_same<LA, Supernodal_cholesky_traits>::value)
-        krylov_schur_solve(*op, bop, count, ncv, sigma, tol, max_iterations, static_cast<unsigned long>(round) + 1, round > 0,
-                           new_values, new_vectors, r);
+        krylov_schur_solve(*op, bop, count, ncv, sigma, tol, max_iterations, static_cast<unsigned long>(round) + 1,
+                           round > 0 || !null_space.empty(), null_space, mass.data(), new_values, new_vectors, r);
       else
-        spectra_solve(*op, bop, count, ncv, sigma, tol, max_iterations, round, new_values, new_vectors, r);
+        spectra_solve(*op, bop, count, ncv, sigma, tol, max_iterations, round, null_space, mass.data(), new_values, new_vectors, r);
     };
     Eigen::VectorXd new_values;
     Eigen::MatrixXd new_vectors;
@@ -430,6 +501,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     {
       Eigen::VectorXd v = new_vectors.col(keep[j]);
       // re-orthogonalize against what was found (M inner product), as rounding leaks
+      null_space.project(mass.data(), v.data());
       if(found > 0)
         v -= vectors * (vectors.transpose() * (M * v));
       v /= std::sqrt(v.dot(M * v));
@@ -475,7 +547,8 @@ Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L
                                                    double tolerance = 1e-10,
                                                    Eigen::Index max_iterations = 1000,
                                                    const std::function<bool()>& keep_going = std::function<bool()>(),
-                                                   bool parallel = false)
+                                                   bool parallel = false,
+                                                   const Known_null_space& null_space = Known_null_space())
 {
 #ifdef CGAL_USE_METIS
   typedef Nested_dissection_ordering<int> Ordering;
@@ -493,13 +566,22 @@ Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L
     renumbered_M = M.selfadjointView<Eigen::Lower>().twistedBy(to_new);
     Eigen::SparseMatrix<double>().swap(L);   // not needed any more (45 MB at 537k vertices)
     Eigen::SparseMatrix<double>().swap(M);
+    Known_null_space renumbered_null_space;
+    if(!null_space.empty())
+    {
+      renumbered_null_space.number_of_components = null_space.number_of_components;
+      renumbered_null_space.component.resize(null_space.component.size());
+      for(std::size_t k = 0; k < null_space.component.size(); ++k)
+        renumbered_null_space.component[k] = null_space.component[static_cast<std::size_t>(eliminated.indices()[static_cast<Eigen::Index>(k)])];
+    }
     Eigen_solve_result r = smallest_generalized_eigenpairs_in_order<Supernodal_cholesky_traits>(renumbered_L, renumbered_M, nev, tolerance,
-                                                                                                 max_iterations, keep_going, parallel);
+                                                                                                 max_iterations, keep_going, parallel,
+                                                                                                 renumbered_null_space);
     r.eigenvectors = eliminated * r.eigenvectors;   // row k goes back to row eliminated[k]
     return r;
   }
 #endif
-  return smallest_generalized_eigenpairs_in_order<LA>(L, M, nev, tolerance, max_iterations, keep_going, parallel);
+  return smallest_generalized_eigenpairs_in_order<LA>(L, M, nev, tolerance, max_iterations, keep_going, parallel, null_space);
 }
 
 } // namespace internal
