@@ -457,7 +457,6 @@ private:
     namespace SVi = Surface_voronoi::internal;
     namespace SVnp = Surface_voronoi::internal_np;
     const TriangleMesh& tm = *m_tm;
-    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     if(&metric.triangle_mesh() != &tm)
       throw Surface_voronoi::Input_error("the metric was built on another mesh");
 
@@ -471,9 +470,9 @@ private:
         choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
     m_data.mesh = SVi::shared_or_new_indexed_mesh(given ? given : SVi::indexed_mesh_of<TriangleMesh>(metric), tm, m_vpm,
                                                   SVi::use_threads<ConcurrencyTag>());
-    CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
-    CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
-    CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
+    // the copy has refused faces that are not triangles; the fans were checked by a caller
+    // that built the mesh from a checked polygon soup
+    SVi::throw_mesh_problems(*m_data.mesh, !choose_parameter(get_parameter(np, SVnp::checked_mesh_topology), false));
 
     // breaklines
     if(!is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
@@ -490,7 +489,8 @@ private:
     {
       m_data.sites.push_back(locator.locate(s, m_data.sites.size()));
       m_data.sites.back().weight = weight_of(np, s, m_data.sites.size() - 1, std::integral_constant<bool, has_weights>());
-      CGAL_precondition_msg(std::isfinite(m_data.sites.back().weight), "the weights must be finite");
+      if(!std::isfinite(m_data.sites.back().weight))
+        throw Surface_voronoi::Input_error("the weight of site " + std::to_string(m_data.sites.size() - 1) + " is not finite");
     }
     CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
     if(m_data.sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
@@ -498,10 +498,11 @@ private:
     m_data.merged_into.assign(m_data.sites.size(), no_site);
     const Surface_voronoi::Coincident_sites policy =
         choose_parameter(get_parameter(np, SVnp::coincident_sites), Surface_voronoi::Coincident_sites::REJECT);
-    CGAL_USE(policy);
     for(const auto& pair : SVi::find_coincident_sites(*m_data.mesh, m_data.sites))
     {
-      CGAL_precondition_msg(policy == Surface_voronoi::Coincident_sites::MERGE, "two sites are at the same surface point");
+      if(policy != Surface_voronoi::Coincident_sites::MERGE)
+        throw Surface_voronoi::Coincident_sites_error("sites " + std::to_string(pair.first) + " and " + std::to_string(pair.second)
+                                                      + " are at the same surface point", pair.first, pair.second);
       m_data.merged_into[pair.second] = pair.first;
     }
     // sites on breaklines start on every side of them

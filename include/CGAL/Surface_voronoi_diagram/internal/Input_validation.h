@@ -17,6 +17,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/Input_problem.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -169,6 +170,29 @@ void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& li
   if(!check_vertex_fans) return;
   for(std::size_t v : non_manifold_vertices(mesh))
     list.add(Input_problem::NON_MANIFOLD_VERTEX, v, "vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans");
+}
+
+/// The diagram's checks of the mesh, in every build: throws `Input_error` with the first
+/// problem `find_mesh_problems()` finds (vertices first, then faces).
+template <class TriangleMesh>
+void throw_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, bool check_vertex_fans)
+{
+  std::vector<Input_problem> problems;
+  Problem_list list(problems, 1);
+  find_mesh_problems(mesh, list, check_vertex_fans);
+  if(!problems.empty()) throw Input_error(problems.front().message);
+}
+
+/// A metric's check of the mesh, in every build: what it computes with must be finite.
+template <class TriangleMesh>
+void throw_non_finite_points(const Indexed_mesh<TriangleMesh>& mesh)
+{
+  for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+  {
+    const Point_d& p = mesh.points[v];
+    if(!(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+      throw Input_error("vertex " + std::to_string(v) + " has a non-finite coordinate");
+  }
 }
 
 /// Pairs (first, later) of sites at the same surface point, each later site paired with the
