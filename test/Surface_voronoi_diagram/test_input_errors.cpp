@@ -166,6 +166,30 @@ TEST_CASE("input errors: a non-manifold vertex is named", "[input_errors]")
   CHECK(problems[0].element == 7);
 }
 
+TEST_CASE("input errors: faces of zero area and degenerate faces are named", "[input_errors]")
+{
+  // one vertex of face 30 moved onto another: the two faces of that edge lose their area,
+  // the first by index is named
+  Mesh flat = sphere(2);
+  const auto h = halfedge(Mesh::Face_index(30), flat);
+  flat.point(target(h, flat)) = flat.point(source(h, flat));
+  const std::size_t first = (std::min)(std::size_t(30), std::size_t(face(opposite(h, flat), flat)));
+  Euclidean e(flat);
+  const auto sites = area_uniform_locations(sphere(2), 10, 3);
+  require_error<SV::Input_error>([&] { CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(flat, e, sites); },
+                                 "face " + std::to_string(first) + " has zero area");
+  // a needle below 2^-44 of its squared longest edge (face 1)
+  Mesh needle;
+  const auto a = needle.add_vertex(Point(-0.5, 0, 0)), b = needle.add_vertex(Point(0.5, 0, 0));
+  const auto c = needle.add_vertex(Point(0, -0.5, 0)), d = needle.add_vertex(Point(0, 1e-14, 0));
+  needle.add_face(b, a, c);
+  needle.add_face(a, b, d);
+  Euclidean en(needle);
+  require_error<SV::Input_error>([&] {
+    CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(needle, en, std::vector<Mesh::Vertex_index>{ c });
+  }, "face 1 is degenerate");
+}
+
 TEST_CASE("input errors: sites out of range are named", "[input_errors]")
 {
   const Mesh m = sphere(1);

@@ -479,6 +479,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "sites: " << s.sites << "\n"
             << "cells: " << s.cells << "\n"
             << "empty_cells: " << s.empty_cells << "\n"
+            << "merged_sites: " << s.merged_sites << "\n"
             << "pieces: " << s.pieces << "\n"
             << "broken_cells_before_repair: " << s.broken_cells_before_repair << "\n"
             << "broken_cells: " << s.broken_cells << "\n"

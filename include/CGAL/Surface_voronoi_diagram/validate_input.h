@@ -9,8 +9,8 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Validation of a diagram's input, for callers that want every problem named instead of a
-// failed precondition: the command-line program calls it before anything else.
+// Validation of a diagram's input, for callers that want every problem named instead of the
+// constructor's first exception: the command-line program calls it before anything else.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VALIDATE_INPUT_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_VALIDATE_INPUT_H
@@ -38,9 +38,11 @@ namespace Surface_voronoi {
 /// Checks the input of a `CGAL::Surface_voronoi_diagram` (the mesh, the sites and the named
 /// parameters that concern them) and returns what is wrong, at most ten problems of each
 /// kind, in the order of the mesh's elements and the sites; an empty result means that the
-/// diagram's preconditions hold. Unlike the preconditions, which are checked in debug builds
-/// only, this check runs in every build: call it on input that may be invalid (the
-/// `surface_voronoi` program calls it before anything else).
+/// diagram's constructor will neither throw `Input_error` nor fail a precondition for this
+/// input. The constructor stops at the first problem it meets (and checks the halfedge
+/// structure in debug builds only); this function checks everything in every build and lists
+/// every problem: call it on input that may be invalid (the `surface_voronoi` program calls it
+/// before anything else).
 ///
 /// Among the mesh's problems: a face whose area is below \f$ 2^{-44} \f$ (about 5.7e-14)
 /// times its squared longest edge is degenerate (`Input_problem::ZERO_AREA_FACE`, its message
