@@ -111,7 +111,10 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
       choose_parameter(get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >()),
       tm, vpm);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *indexed;
+  const std::size_t before = problems.size();
   internal::find_mesh_problems(mesh, list, !topology_checked);
+  if(problems.size() == before)   // a diagram on the same copy does not check it again
+    mesh.checked.raise(topology_checked ? internal::Mesh_check_level::WITHOUT_FANS : internal::Mesh_check_level::WITH_FANS);
 
   const double max_distance = choose_parameter(get_parameter(np, internal_np::max_site_distance),
                                                std::numeric_limits<double>::infinity());

@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -122,6 +123,27 @@ private:
   Index_map m_index;
 };
 
+/// How far the checks of a diagram's input went on an indexed copy, which never changes once
+/// built: the stages that share the copy (Lloyd's steps, the program's) check it once. A
+/// copy of the copy keeps the level.
+class Mesh_check_level
+{
+public:
+  enum Level { NONE, WITHOUT_FANS, WITH_FANS };
+  Mesh_check_level() {}
+  Mesh_check_level(const Mesh_check_level& other) : m_level(other.m_level.load()) {}
+  Mesh_check_level& operator=(const Mesh_check_level& other) { m_level = other.m_level.load(); return *this; }
+  bool reached(Level level) const { return m_level.load() >= level; }
+  void raise(Level level) const
+  {
+    int current = m_level.load();
+    while(current < level && !m_level.compare_exchange_weak(current, level)) {}
+  }
+
+private:
+  mutable std::atomic<int> m_level{ NONE };
+};
+
 template <class TriangleMesh>
 struct Indexed_mesh
 {
@@ -152,6 +174,7 @@ struct Indexed_mesh
   std::size_t number_of_components = 0;
   double total_area = 0;
   double bbox_diagonal = 0;
+  Mesh_check_level checked;                                      // see `throw_mesh_problems()`
 
   typedef typename Element_numbering<vertex_descriptor, Dynamic_vertex_index_map>::Index_map Vertex_index_map;
   typedef typename Element_numbering<face_descriptor, Dynamic_face_index_map>::Index_map Face_index_map;

@@ -173,14 +173,18 @@ void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& li
 }
 
 /// The diagram's checks of the mesh, in every build: throws `Input_error` with the first
-/// problem `find_mesh_problems()` finds (vertices first, then faces).
+/// problem `find_mesh_problems()` finds (vertices first, then faces). A copy found valid is
+/// not checked again.
 template <class TriangleMesh>
 void throw_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, bool check_vertex_fans)
 {
+  const Mesh_check_level::Level level = check_vertex_fans ? Mesh_check_level::WITH_FANS : Mesh_check_level::WITHOUT_FANS;
+  if(mesh.checked.reached(level)) return;
   std::vector<Input_problem> problems;
   Problem_list list(problems, 1);
   find_mesh_problems(mesh, list, check_vertex_fans);
   if(!problems.empty()) throw Input_error(problems.front().message);
+  mesh.checked.raise(level);
 }
 
 /// A metric's check of the mesh, in every build: what it computes with must be finite.
