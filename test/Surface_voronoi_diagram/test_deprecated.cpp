@@ -389,15 +389,6 @@ TEST_CASE("deprecated: Geodesic_metric::set_sites(tm, sites) is set_sites(sites)
   CHECK(same_inside == probes.size());
 }
 
-TEST_CASE("deprecated: Coincident_sites_error is still an Input_error naming the two sites", "[deprecated]")
-{
-  const SV::Coincident_sites_error error("sites 3 and 7 coincide", 3, 7);
-  const SV::Input_error& as_input_error = error;
-  CHECK(std::string(as_input_error.what()) == "sites 3 and 7 coincide");
-  CHECK(error.first == 3);
-  CHECK(error.second == 7);
-}
-
 TEST_CASE("deprecated: Surface_voronoi::draw() and the old draw header forward to CGAL::draw()", "[deprecated][draw]")
 {
   Mesh m;

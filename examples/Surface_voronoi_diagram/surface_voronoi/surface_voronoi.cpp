@@ -481,6 +481,7 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "sites: " << s.sites << "\n"
             << "cells: " << s.cells << "\n"
             << "empty_cells: " << s.empty_cells << "\n"
+            << "merged_sites: " << s.merged_sites << "\n"
             << "pieces: " << s.pieces << "\n"
             << "broken_cells_before_repair: " << s.broken_cells_before_repair << "\n"
             << "broken_cells: " << s.broken_cells << "\n"
@@ -519,8 +520,10 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
   SV::internal::Stage_times times;
+  // the fans were checked on the soup (the library's refinement and insertion keep them)
   const Diagram vd = with_diagram_parameters(choices,
-      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline))),
+      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::checked_mesh_topology(true,
+          SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)))),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
   // the dual first: with --valid-dual, one that is not valid is an error, and no file is written

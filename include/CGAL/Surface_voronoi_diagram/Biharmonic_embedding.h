@@ -26,6 +26,7 @@
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
@@ -191,8 +192,11 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \pre `tm` is a triangle mesh without faces of zero area
+  /// \pre `tm` is a valid polygon mesh without faces of zero area
   /// \pre `1 <= d <= maximum_dimension(tm)`
+  /// \throws Surface_voronoi::Input_error in every build if a face of `tm` is not a triangle or
+  ///         a vertex has a coordinate that is not a finite number (the message names the
+  ///         face or vertex, by its position in `faces(tm)` or `vertices(tm)`)
   /// \throws Surface_voronoi::Input_error in every build if `d > maximum_dimension(tm)` (the
   ///         message names the maximum); the library does not lower `d` by itself (the
   ///         `surface_voronoi` program lowers its default of 10 to the maximum, with a note)
@@ -328,10 +332,11 @@ private:
                Surface_voronoi::internal::Stage_times* times)
   {
     namespace SVi = Surface_voronoi::internal;
-    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     CGAL_precondition_msg(dimension >= 1, "the embedding dimension must be at least 1");
     SVi::Stage_timer timer(times);
+    // (the copy refuses faces that are not triangles)
     const auto mesh = SVi::shared_or_new_indexed_mesh(given, tm, vpm, SVi::use_threads<ConcurrencyTag>());
+    SVi::throw_non_finite_points(*mesh);
     m_mesh = mesh;
     Eigen::SparseMatrix<double> L, M;
     SVi::assemble_cotangent_laplacian(mesh->points, mesh->triangles, L, M);

@@ -22,6 +22,7 @@
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/Biharmonic_green_function.h>
@@ -142,13 +143,15 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than
+  /// \pre `tm` is a valid polygon mesh without faces of zero area, with fewer than
   ///      \f$ 2^{32} - 1 \f$ vertices and faces
+  /// \throws Input_error in every build if a face of `tm` is not a triangle or a vertex has a
+  ///         coordinate that is not a finite number (the message names the face or vertex, by
+  ///         its position in `faces(tm)` or `vertices(tm)`)
   /// \throws Numerical_error if the Laplacian cannot be factorized (degenerate faces)
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Biharmonic_green_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
   {
-    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     m_maximum_bytes = CGAL::parameters::choose_parameter(
@@ -156,6 +159,7 @@ public:
     CGAL_precondition_msg(m_maximum_bytes >= 0, "maximum_column_memory must not be negative");
     m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
+    internal::throw_non_finite_points(*m_mesh);   // (the copy refuses faces that are not triangles)
     auto green = std::make_shared<Green_function>();
     if(!green->build(m_mesh->points, m_mesh->triangles, m_mesh->face_component, m_mesh->number_of_components))
       throw Numerical_error("Biharmonic_green_metric: the cotangent Laplacian is not positive definite once a vertex of "

@@ -32,6 +32,9 @@ struct Diagram_statistics
   std::size_t cells = 0;
   /// the cells without area (a power weight too small, a merged site)
   std::size_t empty_cells = 0;
+  /// the sites merged into an earlier site at the same surface point (with
+  /// `Coincident_sites::MERGE`; each is also counted in `empty_cells`)
+  std::size_t merged_sites = 0;
   /// the connected pieces of all cells, after repair
   std::size_t pieces = 0;
   /// the cells in more than one piece before repair

@@ -18,12 +18,16 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <string>
 
 namespace CGAL {
 namespace Surface_voronoi {
@@ -69,13 +73,26 @@ public:
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
+  ///
+  /// \throws Input_error in every build if a vertex has a coordinate that is not a finite
+  ///         number (the message names the vertex, by its position in `vertices(tm)`)
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Euclidean_embedding(const TriangleMesh& tm,
                                const NamedParameters& np = CGAL::parameters::default_values())
     : m_tm(&tm),
       m_vpm(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                get_const_property_map(CGAL::vertex_point, tm)))
-  {}
+  {
+    std::size_t index = 0;
+    for(vertex_descriptor v : vertices(tm))
+    {
+      double c[3];
+      coordinates(v, c);
+      if(!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2])))
+        throw Input_error("vertex " + std::to_string(index) + " has a non-finite coordinate");
+      ++index;
+    }
+  }
 
   /// \name SurfaceVoronoiEmbedding
   /// @{

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Fast_marching/Local_fast_marching.h>
 
@@ -115,18 +116,21 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
-  /// \pre `tm` is a triangle mesh without faces of zero area, with fewer than
+  /// \pre `tm` is a valid polygon mesh without faces of zero area, with fewer than
   ///      \f$ 2^{32} - 1 \f$ vertices and faces
+  /// \throws Input_error in every build if a face of `tm` is not a triangle or a vertex has a
+  ///         coordinate that is not a finite number (the message names the face or vertex, by
+  ///         its position in `faces(tm)` or `vertices(tm)`)
   template <class NamedParameters = CGAL::parameters::Default_named_parameters>
   explicit Geodesic_metric(const TriangleMesh& tm, const NamedParameters& np = CGAL::parameters::default_values())
   {
-    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     const Vertex_point_map vpm = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     CGAL_precondition_msg(num_vertices(tm) < std::size_t(std::uint32_t(-1)) && num_faces(tm) < std::size_t(std::uint32_t(-1)),
                           "the mesh has too many elements for the geodesic metric");
     m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
+    internal::throw_non_finite_points(*m_mesh);   // (the copy refuses faces that are not triangles)
     m_marching_mesh = std::make_shared<const Marching_mesh>(*m_mesh);
   }
 

@@ -90,15 +90,16 @@ namespace CGAL {
 /// outside the range scale it by a power of two (exact) first, as the `surface_voronoi`
 /// program does.
 ///
-/// <b>Errors.</b> Invalid input (a mesh that is not a valid triangle mesh, faces of zero area
-/// or degenerate, coordinates out of range,
-/// non-manifold vertices, no sites, coincident sites, non-finite weights) violates a
-/// precondition of the constructor: checked by `CGAL_precondition` in debug builds only.
-/// `Surface_voronoi::validate_input()` checks all of these in every build and names what is
-/// wrong. Exceptions are kept for the checks that protect memory and stay on in every build
-/// (`Surface_voronoi::Input_error`), for a check the caller asks for
-/// (`Surface_voronoi::Site_too_far_error`) and for a numerical failure that valid input can
-/// still meet (`Surface_voronoi::Numerical_error`).
+/// <b>Errors.</b> Invalid input that is cheap to detect throws `Surface_voronoi::Input_error`
+/// naming the element, in every build: a face that is not a triangle, a non-finite or
+/// out-of-range coordinate, a face of zero area or degenerate, an isolated or non-manifold
+/// vertex, a site that is not on the mesh, a non-finite weight or embedding coordinate, and
+/// (`Surface_voronoi::Coincident_sites_error`) two sites at the same surface point unless
+/// they are merged. Nothing non-finite reaches the exact arithmetic. What is costly to check
+/// (a halfedge structure that is not a valid polygon mesh) and the sites being empty stay
+/// preconditions (`CGAL_precondition`, debug builds); `Surface_voronoi::validate_input()`
+/// checks everything in every build and lists every problem. A numerical failure that valid
+/// input can still meet throws `Surface_voronoi::Numerical_error`.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam Metric a model of `SurfaceVoronoiEmbedding` or `SurfaceVoronoiLazyMetric`
@@ -194,7 +195,7 @@ public:
   ///     \cgalParamType{a model of `ReadablePropertyMap` whose key is the sites' type (as the
   ///       range holds them) or `std::size_t` (the site index), and whose value converts to `double`}
   ///     \cgalParamDefault{all weights zero}
-  ///     \cgalParamExtra{the weights must be finite}
+  ///     \cgalParamExtra{a weight that is not finite makes the constructor throw `Surface_voronoi::Input_error`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{Surface_voronoi::parameters::max_site_distance}
   ///     \cgalParamDescription{a site given as a point farther than this from the surface makes
@@ -203,9 +204,12 @@ public:
   ///     \cgalParamDefault{infinity}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{Surface_voronoi::parameters::coincident_sites}
-  ///     \cgalParamDescription{what two sites at the same surface point mean: a precondition
-  ///       violation (`REJECT`), or the later site merged into the earlier one (`MERGE`: it keeps
-  ///       its index, owns no area, and `merged_into()` names the site that owns its cell)}
+  ///     \cgalParamDescription{what two sites at the same surface point (the same location once
+  ///       sites given as points are moved onto the surface) mean: an error (`REJECT`: the
+  ///       constructor throws `Surface_voronoi::Coincident_sites_error` naming both), or the later
+  ///       site merged into the earlier one (`MERGE`: it keeps its index, owns no area,
+  ///       `merged_into()` names the site that owns its cell, and `statistics().merged_sites`
+  ///       counts the merged sites)}
   ///     \cgalParamType{`Surface_voronoi::Coincident_sites`}
   ///     \cgalParamDefault{`Surface_voronoi::Coincident_sites::REJECT`}
   ///   \cgalParamNEnd
@@ -253,17 +257,19 @@ public:
   /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not
   /// used after the constructor returns.
   ///
-  /// \pre `tm` is a valid triangle mesh whose vertices are manifold, within the documented
-  ///      coordinate range (no coordinate beyond \f$ 2^{200} \f$ in magnitude, no face whose
-  ///      longest edge is below \f$ 2^{-200} \f$), and whose faces are not degenerate (each
-  ///      has an area of at least \f$ 2^{-44} \f$ times its squared longest edge: needles and
-  ///      caps above that are computed with); the sites are not empty; with `Coincident_sites::REJECT`, no two sites are
-  ///      at the same surface point; the weights are finite. `Surface_voronoi::validate_input()`
-  ///      checks all of these and names what is wrong.
-  /// \throws Surface_voronoi::Input_error if a site is not on `tm` (a descriptor of another
-  ///         mesh, coordinates that are not numbers), if `metric.triangle_mesh()` is not `tm`,
-  ///         or if there are \f$ 2^{32} - 1 \f$ sites or more: these checks protect memory and
-  ///         stay on in every build
+  /// \pre `tm` is a valid polygon mesh (its halfedges are consistent); the sites are not
+  ///      empty. `Surface_voronoi::validate_input()` checks these too.
+  /// \throws Surface_voronoi::Input_error in every build, the message naming the face, vertex
+  ///         or site (by its position in `faces(tm)`, `vertices(tm)` or `sites`), if a face is
+  ///         not a triangle, a vertex has a non-finite coordinate or one beyond
+  ///         \f$ 2^{200} \f$ in magnitude, a face has no area, a longest edge below
+  ///         \f$ 2^{-200} \f$, or an area below \f$ 2^{-44} \f$ times its squared longest
+  ///         edge (needles and caps above that are computed with), a vertex belongs to no face
+  ///         or is non-manifold, a site is not on `tm` (a descriptor of another mesh, a point
+  ///         that is not finite), a weight or an embedding coordinate is not finite, if
+  ///         `metric.triangle_mesh()` is not `tm`, or if there are \f$ 2^{32} - 1 \f$ sites or more
+  /// \throws Surface_voronoi::Coincident_sites_error (an `Input_error`) with `Coincident_sites::REJECT`,
+  ///         if two sites are at the same surface point
   /// \throws Surface_voronoi::Site_too_far_error as said for `max_site_distance`
   /// \throws Surface_voronoi::Numerical_error if a lazy metric returns an invalid distance
   template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -465,7 +471,6 @@ private:
     namespace SVi = Surface_voronoi::internal;
     namespace SVnp = Surface_voronoi::internal_np;
     const TriangleMesh& tm = *m_tm;
-    CGAL_precondition_msg(is_triangle_mesh(tm), "the mesh must be a triangle mesh");
     if(&metric.triangle_mesh() != &tm)
       throw Surface_voronoi::Input_error("the metric was built on another mesh");
 
@@ -479,9 +484,9 @@ private:
         choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
     m_data.mesh = SVi::shared_or_new_indexed_mesh(given ? given : SVi::indexed_mesh_of<TriangleMesh>(metric), tm, m_vpm,
                                                   SVi::use_threads<ConcurrencyTag>());
-    CGAL_precondition_code(std::vector<Surface_voronoi::Input_problem> problems;)
-    CGAL_precondition_code(SVi::Problem_list list(problems, 1); SVi::find_mesh_problems(*m_data.mesh, list);)
-    CGAL_precondition_msg(problems.empty(), problems.empty() ? "" : problems.front().message.c_str());
+    // the copy has refused faces that are not triangles; the fans were checked by a caller
+    // that built the mesh from a checked polygon soup
+    SVi::throw_mesh_problems(*m_data.mesh, !choose_parameter(get_parameter(np, SVnp::checked_mesh_topology), false));
 
     // breaklines
     if(!is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
@@ -498,7 +503,8 @@ private:
     {
       m_data.sites.push_back(locator.locate(s, m_data.sites.size()));
       m_data.sites.back().weight = weight_of(np, s, m_data.sites.size() - 1, std::integral_constant<bool, has_weights>());
-      CGAL_precondition_msg(std::isfinite(m_data.sites.back().weight), "the weights must be finite");
+      if(!std::isfinite(m_data.sites.back().weight))
+        throw Surface_voronoi::Input_error("the weight of site " + std::to_string(m_data.sites.size() - 1) + " is not finite");
     }
     CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
     if(m_data.sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
@@ -506,10 +512,11 @@ private:
     m_data.merged_into.assign(m_data.sites.size(), no_site);
     const Surface_voronoi::Coincident_sites policy =
         choose_parameter(get_parameter(np, SVnp::coincident_sites), Surface_voronoi::Coincident_sites::REJECT);
-    CGAL_USE(policy);
     for(const auto& pair : SVi::find_coincident_sites(*m_data.mesh, m_data.sites))
     {
-      CGAL_precondition_msg(policy == Surface_voronoi::Coincident_sites::MERGE, "two sites are at the same surface point");
+      if(policy != Surface_voronoi::Coincident_sites::MERGE)
+        throw Surface_voronoi::Coincident_sites_error("sites " + std::to_string(pair.first) + " and " + std::to_string(pair.second)
+                                                      + " are at the same surface point", pair.first, pair.second);
       m_data.merged_into[pair.second] = pair.first;
     }
     // sites on breaklines start on every side of them

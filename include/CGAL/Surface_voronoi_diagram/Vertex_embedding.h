@@ -33,8 +33,8 @@ namespace Surface_voronoi {
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// A user-supplied embedding: `get(map, v)` returns a random-access range of `dimension`
 /// numbers (`std::vector<double>`, `std::array<double, N>`, `Eigen::VectorXd`, ...). The
-/// ranges are read when a diagram is built; they must hold finite numbers (a precondition),
-/// and a range of another size makes the diagram throw `Input_error`. Squared distances,
+/// ranges are read when a diagram is built: a number that is not finite, or a range of another
+/// size, makes the diagram throw `Input_error` (in every build). Squared distances,
 /// and power weights, are in the squared units of these coordinates.
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexCoordinatesMap a model of `ReadablePropertyMap` whose key type is the vertex

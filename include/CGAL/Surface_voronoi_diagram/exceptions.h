@@ -9,18 +9,15 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// The exceptions of the package. Invalid input is a failed precondition
-// (`CGAL_precondition_msg`; `validate_input()` reports it in every build). Exceptions are
-// thrown only where the check protects memory and stays on in every build (a site that is
-// not on the mesh, a metric built on another mesh), where the caller asked for a check
-// (`max_site_distance`), and for failures that valid input can still meet (the eigen-solver).
+// The exceptions of the package. Invalid input that is cheap to detect throws
+// `Input_error` (or a class derived from it) naming the element, in every build; what is
+// costly to check stays a documented precondition (`validate_input()` checks it in every
+// build). A failure that valid input can still meet throws `Numerical_error`.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_EXCEPTIONS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_EXCEPTIONS_H
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
-
-#include <CGAL/config.h>
 
 #include <cstddef>
 #include <stdexcept>
@@ -39,10 +36,12 @@ public:
 };
 
 /// \ingroup PkgSurfaceVoronoiDiagramRef
-/// An input that would make the computation read memory it must not: a site that is not on
-/// the mesh (a descriptor of another mesh, non-finite coordinates), a metric built on
-/// another mesh, a `Vertex_embedding` whose map gives a number of coordinates other than its
-/// dimension. These checks stay on in every build.
+/// Invalid input, detected in every build; the message names the element concerned (a
+/// vertex, face or site index, in the order of `vertices(tm)`, `faces(tm)` and the site
+/// range): a face that is not a triangle, a non-finite or out-of-range coordinate, a
+/// degenerate face, an isolated or non-manifold vertex, a site that is not on the mesh (a
+/// descriptor of another mesh, a point that is not finite), a non-finite power weight or
+/// embedding coordinate, a metric built on another mesh, an index out of range.
 class Input_error : public Error
 {
 public:
@@ -76,12 +75,12 @@ public:
   explicit Numerical_error(const std::string& what) : Error(what) {}
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Coincident sites are a precondition violation now (see `validate_input()`
-/// and the named parameter `Surface_voronoi::parameters::coincident_sites`, whose
-/// `Coincident_sites::MERGE` accepts them); nothing throws this any more.
-class CGAL_DEPRECATED_MSG("coincident sites are a precondition; see the named parameter coincident_sites")
-Coincident_sites_error : public Input_error
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// Two sites are at the same surface point (the same location once the sites given as
+/// points are moved onto the surface), and the named parameter
+/// `Surface_voronoi::parameters::coincident_sites` is `Coincident_sites::REJECT`, the default
+/// (`Coincident_sites::MERGE` accepts them).
+class Coincident_sites_error : public Input_error
 {
 public:
   /// sites `first` and `second` are at the same surface point

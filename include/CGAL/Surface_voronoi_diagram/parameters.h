@@ -45,10 +45,12 @@ enum class Candidate_selection
 /// `coincident_sites`).
 enum class Coincident_sites
 {
-  /// they violate a precondition (checked by `validate_input()`); the default
+  /// the diagram's constructor throws `Coincident_sites_error` naming both, in every build
+  /// (`validate_input()` lists every such pair); the default
   REJECT,
   /// the later site is merged into the earlier one: it keeps its index but owns no area,
-  /// and `Surface_voronoi_diagram::merged_into()` names the site that owns its cell
+  /// `Surface_voronoi_diagram::merged_into()` names the site that owns its cell, and
+  /// `Diagram_statistics::merged_sites` counts the merged sites
   MERGE
 };
 

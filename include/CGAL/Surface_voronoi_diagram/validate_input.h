@@ -9,8 +9,8 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Validation of a diagram's input, for callers that want every problem named instead of a
-// failed precondition: the command-line program calls it before anything else.
+// Validation of a diagram's input, for callers that want every problem named instead of the
+// constructor's first exception: the command-line program calls it before anything else.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_VALIDATE_INPUT_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_VALIDATE_INPUT_H
@@ -38,9 +38,11 @@ namespace Surface_voronoi {
 /// Checks the input of a `CGAL::Surface_voronoi_diagram` (the mesh, the sites and the named
 /// parameters that concern them) and returns what is wrong, at most ten problems of each
 /// kind, in the order of the mesh's elements and the sites; an empty result means that the
-/// diagram's preconditions hold. Unlike the preconditions, which are checked in debug builds
-/// only, this check runs in every build: call it on input that may be invalid (the
-/// `surface_voronoi` program calls it before anything else).
+/// diagram's constructor will neither throw `Input_error` nor fail a precondition for this
+/// input. The constructor stops at the first problem it meets (and checks the halfedge
+/// structure in debug builds only); this function checks everything in every build and lists
+/// every problem: call it on input that may be invalid (the `surface_voronoi` program calls it
+/// before anything else).
 ///
 /// Among the mesh's problems: a face whose area is below \f$ 2^{-44} \f$ (about 5.7e-14)
 /// times its squared longest edge is degenerate (`Input_problem::ZERO_AREA_FACE`, its message
@@ -109,7 +111,10 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
       choose_parameter(get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >()),
       tm, vpm);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *indexed;
+  const std::size_t before = problems.size();
   internal::find_mesh_problems(mesh, list, !topology_checked);
+  if(problems.size() == before)   // a diagram on the same copy does not check it again
+    mesh.checked.raise(topology_checked ? internal::Mesh_check_level::WITHOUT_FANS : internal::Mesh_check_level::WITH_FANS);
 
   const double max_distance = choose_parameter(get_parameter(np, internal_np::max_site_distance),
                                                std::numeric_limits<double>::infinity());

@@ -77,6 +77,7 @@ public:
 
     d.statistics = Diagram_statistics();
     d.statistics.sites = n;
+    d.statistics.merged_sites = d.number_of_merged_sites();
     d.statistics.surface_area = m_mesh.total_area;
 
     typedef Propagation<TriangleMesh, Fields, decltype(is_blocked)> Field_propagation;

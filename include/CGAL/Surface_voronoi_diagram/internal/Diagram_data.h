@@ -26,6 +26,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_fields.h>
 
+#include <algorithm>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -64,6 +65,12 @@ struct Diagram_data
     vertex_site.assign(mesh ? mesh->number_of_vertices() : 0, no_site);
     statistics = Diagram_statistics();
     statistics.sites = sites.size();
+    statistics.merged_sites = number_of_merged_sites();
+  }
+
+  std::size_t number_of_merged_sites() const
+  {
+    return std::size_t(std::count_if(merged_into.begin(), merged_into.end(), [](std::size_t s) { return s != no_site; }));
   }
 };
 

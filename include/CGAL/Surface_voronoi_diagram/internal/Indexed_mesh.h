@@ -19,6 +19,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
@@ -34,10 +35,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -120,6 +123,27 @@ private:
   Index_map m_index;
 };
 
+/// How far the checks of a diagram's input went on an indexed copy, which never changes once
+/// built: the stages that share the copy (Lloyd's steps, the program's) check it once. A
+/// copy of the copy keeps the level.
+class Mesh_check_level
+{
+public:
+  enum Level { NONE, WITHOUT_FANS, WITH_FANS };
+  Mesh_check_level() {}
+  Mesh_check_level(const Mesh_check_level& other) : m_level(other.m_level.load()) {}
+  Mesh_check_level& operator=(const Mesh_check_level& other) { m_level = other.m_level.load(); return *this; }
+  bool reached(Level level) const { return m_level.load() >= level; }
+  void raise(Level level) const
+  {
+    int current = m_level.load();
+    while(current < level && !m_level.compare_exchange_weak(current, level)) {}
+  }
+
+private:
+  mutable std::atomic<int> m_level{ NONE };
+};
+
 template <class TriangleMesh>
 struct Indexed_mesh
 {
@@ -150,6 +174,7 @@ struct Indexed_mesh
   std::size_t number_of_components = 0;
   double total_area = 0;
   double bbox_diagonal = 0;
+  Mesh_check_level checked;                                      // see `throw_mesh_problems()`
 
   typedef typename Element_numbering<vertex_descriptor, Dynamic_vertex_index_map>::Index_map Vertex_index_map;
   typedef typename Element_numbering<face_descriptor, Dynamic_face_index_map>::Index_map Face_index_map;
@@ -166,7 +191,8 @@ struct Indexed_mesh
     build(tm, vpm, parallel);
   }
 
-  /// \pre `tm` is a valid triangle mesh with at least one face
+  /// \pre `tm` is a valid polygon mesh with at least one face
+  /// \throws Input_error if a face is not a triangle
   template <class VertexPointMap>
   void build(const TriangleMesh& tm, VertexPointMap vpm, bool parallel = false)
   {
@@ -190,7 +216,10 @@ struct Indexed_mesh
     neighbors.resize(nf);
     edges.resize(nf);
     face_areas.resize(nf);
-    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
+    // the first face of each chunk that is not a triangle (its first three corners are read,
+    // harmlessly), reported once the threads are done
+    std::vector<Index> not_a_triangle(number_of_chunks(nf, chunk), none);
+    for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
       for(std::size_t fi = begin; fi < end; ++fi)
       {
         halfedge_descriptor h = halfedge(face_handles[fi], tm);
@@ -202,10 +231,12 @@ struct Indexed_mesh
           neighbors[fi][k] = is_border(opp, tm) ? none : get(face_index, face(opp, tm));
           h = next(h, tm);
         }
-        CGAL_precondition_msg(h == halfedge(face_handles[fi], tm), "every face must be a triangle");
+        if(h != halfedge(face_handles[fi], tm) && not_a_triangle[c] == none) not_a_triangle[c] = Index(fi);
         face_areas[fi] = triangle_area(fi);
       }
     });
+    for(Index f : not_a_triangle)
+      if(f != none) throw Input_error("face " + std::to_string(f) + " is not a triangle");
     for(std::size_t fi = 0; fi < nf; ++fi) total_area += face_areas[fi];   // in face order, whatever the threads
 
     // Global edge ids: the face with the smaller index names the edge first, in face order

@@ -17,8 +17,8 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/Input_problem.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 
@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 #include <string>
@@ -75,36 +76,26 @@ bool find_non_triangles(const TriangleMesh& tm, Problem_list& list)
   return ok;
 }
 
-/// The vertex of the first corner of each fan that is not the vertex's first fan, by
-/// merging the corners of faces that share an edge: a manifold vertex has one fan.
+/// The vertices whose faces form several fans, in a valid polygon mesh (the diagram's
+/// precondition, which `validate_input()` checks first). There the halfedge cycle around a
+/// vertex reaches all its faces (`is_valid_polygon_mesh()` counts the halfedges the cycles
+/// reach), and it can pass from one fan to another only along the border: a vertex has
+/// several fans exactly when several are open. An open fan has one first corner, the one
+/// whose incoming edge (local edge k + 2 at corner k) is on the border. One pass over the
+/// faces, without a walk around the vertices.
 template <class TriangleMesh>
 std::vector<std::size_t> non_manifold_vertices(const Indexed_mesh<TriangleMesh>& mesh)
 {
-  const std::size_t nf = mesh.number_of_faces();
-  Disjoint_sets corners(3 * nf);
-  for(std::size_t f = 0; f < nf; ++f)
+  std::vector<std::uint8_t> open_fans(mesh.number_of_vertices(), 0);
+  std::vector<std::size_t> bad;
+  for(std::size_t f = 0; f < mesh.number_of_faces(); ++f)
     for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t g = mesh.neighbors[f][k];
-      if(g == Indexed_mesh<TriangleMesh>::none) continue;
-      // local edge k joins corners k and k+1; the same vertices are corners of g
-      for(int c : { k, (k + 1) % 3 })
+      if(mesh.neighbors[f][(k + 2) % 3] == Indexed_mesh<TriangleMesh>::none)
       {
-        const int l = mesh.corner_of(g, mesh.triangles[f][c]);
-        if(l >= 0) corners.unite(3 * f + c, 3 * g + l);
+        std::uint8_t& fans = open_fans[mesh.triangles[f][k]];
+        if(fans < 2 && ++fans == 2) bad.push_back(mesh.triangles[f][k]);
       }
-    }
-  std::vector<std::size_t> fan(mesh.number_of_vertices(), std::size_t(-1)), bad;
-  for(std::size_t f = 0; f < nf; ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t v = mesh.triangles[f][k];
-      const std::size_t r = corners.find(3 * f + k);
-      if(fan[v] == std::size_t(-1)) fan[v] = r;
-      else if(fan[v] != r && (bad.empty() || bad.back() != v)) bad.push_back(v);
-    }
   std::sort(bad.begin(), bad.end());
-  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
   return bad;
 }
 
@@ -169,6 +160,33 @@ void find_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, Problem_list& li
   if(!check_vertex_fans) return;
   for(std::size_t v : non_manifold_vertices(mesh))
     list.add(Input_problem::NON_MANIFOLD_VERTEX, v, "vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans");
+}
+
+/// The diagram's checks of the mesh, in every build: throws `Input_error` with the first
+/// problem `find_mesh_problems()` finds (vertices first, then faces). A copy found valid is
+/// not checked again.
+template <class TriangleMesh>
+void throw_mesh_problems(const Indexed_mesh<TriangleMesh>& mesh, bool check_vertex_fans)
+{
+  const Mesh_check_level::Level level = check_vertex_fans ? Mesh_check_level::WITH_FANS : Mesh_check_level::WITHOUT_FANS;
+  if(mesh.checked.reached(level)) return;
+  std::vector<Input_problem> problems;
+  Problem_list list(problems, 1);
+  find_mesh_problems(mesh, list, check_vertex_fans);
+  if(!problems.empty()) throw Input_error(problems.front().message);
+  mesh.checked.raise(level);
+}
+
+/// A metric's check of the mesh, in every build: what it computes with must be finite.
+template <class TriangleMesh>
+void throw_non_finite_points(const Indexed_mesh<TriangleMesh>& mesh)
+{
+  for(std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
+  {
+    const Point_d& p = mesh.points[v];
+    if(!(std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z())))
+      throw Input_error("vertex " + std::to_string(v) + " has a non-finite coordinate");
+  }
 }
 
 /// Pairs (first, later) of sites at the same surface point, each later site paired with the

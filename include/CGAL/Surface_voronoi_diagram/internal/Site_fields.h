@@ -98,9 +98,10 @@ public:
       for(std::size_t v = 0; v < n; ++v)
       {
         metric.coordinates(mesh.vertex_handles[v], m_vertex_coordinates.data() + v * m_dimension);
+        // (nothing non-finite may reach the exact predicates of the cutting)
         for(std::size_t k = 0; k < m_dimension; ++k)
-          CGAL_precondition_msg(std::isfinite(m_vertex_coordinates[v * m_dimension + k]),
-                                "the embedding of a vertex is not finite");
+          if(!std::isfinite(m_vertex_coordinates[v * m_dimension + k]))
+            throw Input_error("the embedding of vertex " + std::to_string(v) + " has a non-finite coordinate");
       }
     }
     m_site_coordinates.assign(sites.size() * m_dimension, 0.);
@@ -151,9 +152,7 @@ private:
       double c[3];
       metric.coordinates(mesh.vertex_handles[v], c);
       const Point_d& p = mesh.points[v];
-      if(!(c[0] == p.x() && c[1] == p.y() && c[2] == p.z())) return false;
-      CGAL_precondition_msg(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]),
-                            "the embedding of a vertex is not finite");
+      if(!(c[0] == p.x() && c[1] == p.y() && c[2] == p.z())) return false;   // (a NaN is not)
     }
     m_points = &mesh.points;
     return true;
