@@ -150,8 +150,9 @@ std::vector<double> squared_metric_distances(Metric& metric, const Location& sit
 /// surface. This function measures that factor around the site: the weight for a length
 /// \f$ l \f$ moves the boundary with a site \f$ \delta \f$ away by at most about
 /// \f$ l^2 / (2 \delta) \f$ in length, as the weight \f$ l^2 \f$ does in the Euclidean metric.
-/// Half the distance to the nearest site (a quarter of the squared distance) is a weight
-/// that leaves every cell in place.
+/// With the Euclidean embedding, the weight for half the distance from a site to its nearest
+/// site is a quarter of the squared spacing, and no site loses its own location; with the
+/// other metrics the smallest ratio keeps the weight at most that in every sampled direction.
 ///
 /// <b>What it computes.</b> Lengths are straight-line distances between points of the mesh.
 /// Let \f$ p \f$ be the point of `site`. The samples are vertices found by a search along
