@@ -1,19 +1,24 @@
 // Power diagrams (paper 4.7.1): site i owns the points where |E(x) - E(s_i)|^2 - w_i is
-// smallest. The weights are given twice to the named parameter site_weight_map, as a vertex
-// property map and as a vector in site order, to show that both forms give the same diagram.
+// smallest. Weights are sized by weight_for_length(), and given twice to the named parameter
+// site_weight_map, as a vertex property map and as a vector in site order, to show that both
+// forms give the same diagram.
 //   power_diagram [MESH] [OUT.ply]
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/property_map.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/site_colors.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -63,22 +68,18 @@ int main(int argc, char** argv)
       sites.push_back(Mesh::Vertex_index(Mesh::size_type(i * (num_vertices(mesh) / 40))));
     CGAL::Surface_voronoi_diagram<Mesh> plain(mesh, metric, sites);
 
-    // Weights are in squared units of the metric. Half the squared distance to the nearest
-    // neighbouring site moves the bisector from half to three quarters of the way to it.
+    // Weights are in the squared units of the metric, and they mean something only against
+    // the squared spacing of the sites around them. Every eighth site gets the weight for half
+    // the distance to its nearest site, measured in the metric around it: its cell grows, and
+    // no cell is emptied.
     auto weight = mesh.add_property_map<Mesh::Vertex_index, double>("v:weight", 0.).first;
-    std::vector<double> e(metric.dimension()), f(metric.dimension());
     for(std::size_t i = 0; i < sites.size(); i += 8)
     {
-      double nearest = -1;
-      metric.coordinates(sites[i], e.data());
-      for(std::size_t j : plain.neighbors(i))
-      {
-        metric.coordinates(sites[j], f.data());
-        double d2 = 0;
-        for(std::size_t c = 0; c < e.size(); ++c) d2 += (e[c] - f[c]) * (e[c] - f[c]);
-        if(nearest < 0 || d2 < nearest) nearest = d2;
-      }
-      weight[sites[i]] = 0.5 * (nearest < 0 ? 0. : nearest);
+      double nearest = std::numeric_limits<double>::infinity();
+      for(std::size_t j = 0; j < sites.size(); ++j)
+        if(j != i) nearest = (std::min)(nearest, std::sqrt(CGAL::squared_distance(mesh.point(sites[i]), mesh.point(sites[j]))));
+      weight[sites[i]] = SV::weight_for_length(metric, CGAL::Polygon_mesh_processing::locate_vertex<double>(sites[i], mesh),
+                                               nearest / 2);
     }
 
     // the property-map form (weights keyed like the sites) and the vector form (keyed by the
@@ -99,6 +100,7 @@ int main(int argc, char** argv)
                   << by_map.cell_area(i) << std::endl;
     }
     std::cout << "map and vector give the same cells: " << (same ? "yes" : "NO") << std::endl;
+    std::cout << "empty cells: " << by_map.statistics().empty_cells << std::endl;
     if(!write_cells_PLY(out, by_map))
     {
       std::cerr << "power_diagram: cannot write " << out << std::endl;

@@ -2,6 +2,9 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
+#include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/power_weights.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 
@@ -9,6 +12,7 @@
 
 #include <limits>
 #include <map>
+#include <string>
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
 namespace svd_test_power_diagram {
@@ -180,6 +184,113 @@ TEST_CASE("power: bad weights are named by validate_input", "[power]")
   Diagram b(m, e, sites, SV::parameters::site_weight_map(CGAL::make_property_map(by_index)));
   require_same_partition(a, b);
   CHECK(b.site_weight(1) == 0.5);
+}
+
+// A lazy metric that adds a term of the vertex alone to the geodesic values, as the concept
+// allows (Biharmonic_green_metric subtracts one): weights must not see it.
+struct Geodesic_with_vertex_term
+{
+  typedef SV::Lazy_metric_tag Metric_category;
+  typedef Mesh Triangle_mesh;
+  typedef Mesh::Vertex_index vertex_descriptor;
+  SV::Geodesic_metric<Mesh> geodesic;
+  explicit Geodesic_with_vertex_term(const Mesh& m) : geodesic(m) {}
+  const Mesh& triangle_mesh() const { return geodesic.triangle_mesh(); }
+  void set_sites(const std::vector<Location<Mesh> >& sites) { geodesic.set_sites(sites); }
+  double squared_distance(std::size_t i, vertex_descriptor v) { return geodesic.squared_distance(i, v) + 3. + double(std::size_t(v) % 7); }
+};
+
+TEST_CASE("power: weight_for_length is the squared length where the metric measures lengths", "[power]")
+{
+  Mesh sphere;
+  GEN::make_icosphere(sphere, 3, 1.0);
+  const Euclidean euclidean(sphere);   // an embedding may be const
+  for(const auto& site : area_uniform_locations(sphere, 10, 3))
+    for(double l : { 0.01, 0.1, 0.5 })
+      CHECK(SV::weight_for_length(euclidean, site, l) == Approx(l * l).epsilon(1e-12));
+
+  // on a plane, geodesic distances are straight-line distances; a term of the vertex alone
+  // that a lazy metric adds to every site's values changes nothing
+  Mesh plane;
+  GEN::make_planar_grid(plane, 30, 30, 1.0, 1.0, 0.2, 5);
+  SV::Geodesic_metric<Mesh> geodesic(plane);
+  Geodesic_with_vertex_term shifted(plane);
+  for(const auto& site : area_uniform_locations(plane, 10, 6))
+    for(double l : { 0.01, 0.05, 0.2 })
+    {
+      const double w = SV::weight_for_length(geodesic, site, l);
+      CHECK(w == Approx(l * l).epsilon(1e-9));
+      CHECK(SV::weight_for_length(shifted, site, l) == Approx(w).epsilon(1e-9));
+    }
+
+  CHECK(SV::weight_for_length(euclidean, area_uniform_locations(sphere, 1, 1)[0], 0.) == 0.);
+  for(double bad : { -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+    CHECK_THROWS_AS(SV::weight_for_length(euclidean, area_uniform_locations(sphere, 1, 1)[0], bad), SV::Input_error);
+}
+
+namespace {
+
+// The number of empty cells when every other site has the weight for half the straight-line
+// distance to its nearest site, and the rest 0; checks that the weights do enlarge their cells.
+template <class Metric>
+std::size_t empty_cells_with_half_spacing_weights(const Mesh& m, Metric& metric, const std::vector<Location<Mesh> >& sites)
+{
+  std::vector<Point> points;
+  for(const auto& l : sites) points.push_back(point_of(l, m));
+  std::vector<double> weights(sites.size(), 0.);
+  for(std::size_t i = 0; i < sites.size(); i += 2)
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(std::size_t j = 0; j < sites.size(); ++j)
+      if(j != i) nearest = (std::min)(nearest, CGAL::squared_distance(points[i], points[j]));
+    weights[i] = SV::weight_for_length(metric, sites[i], 0.5 * std::sqrt(nearest));
+  }
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
+  const Diagram plain(m, metric, sites);
+  const Diagram weighted(m, metric, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights)));
+  REQUIRE(plain.statistics().empty_cells == 0);
+  double plain_area = 0, weighted_area = 0;
+  for(std::size_t i = 0; i < sites.size(); i += 2)
+  {
+    plain_area += plain.cell_area(i);
+    weighted_area += weighted.cell_area(i);
+  }
+  CHECK(weighted_area > 1.02 * plain_area);
+  return weighted.statistics().empty_cells;
+}
+
+} // namespace
+
+TEST_CASE("power: weights for half the nearest-site distance empty no cell on CGAL's elephant and bear",
+          "[power][cgal_data]")
+{
+  for(const std::string name : { "elephant.off", "bear.off" })
+  {
+    const std::string file = std::string(SVD_CGAL_MESHES) + "/" + name;
+    Mesh m;
+    if(std::string(SVD_CGAL_MESHES).empty() || !CGAL::IO::read_polygon_mesh(file, m))
+    {
+      WARN("CGAL's data set not found: " << file << " skipped");
+      continue;
+    }
+    const auto sites = SV::random_sites(m, 300, CGAL::parameters::random_seed(0));
+    INFO(name);
+    {
+      Euclidean e(m);
+      INFO("Euclidean");
+      CHECK(empty_cells_with_half_spacing_weights(m, e, sites) == 0);
+    }
+    {
+      CGAL::Biharmonic_embedding<Mesh> b(m);
+      INFO("biharmonic");
+      CHECK(empty_cells_with_half_spacing_weights(m, b, sites) == 0);
+    }
+    {
+      SV::Geodesic_metric<Mesh> g(m);
+      INFO("geodesic");
+      CHECK(empty_cells_with_half_spacing_weights(m, g, sites) == 0);
+    }
+  }
 }
 
 } // namespace svd_test_power_diagram

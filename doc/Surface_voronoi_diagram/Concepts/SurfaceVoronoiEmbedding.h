@@ -24,7 +24,7 @@ when a diagram is built with it (a precondition).
 power weights of the sites (named parameter `Surface_voronoi::parameters::site_weight_map`):
 squared lengths for `CGAL::Surface_voronoi::Euclidean_embedding`, the much smaller squared
 biharmonic distances for `CGAL::Biharmonic_embedding`.
-`Surface_voronoi::weight_for_squared_length()` converts a squared length into these units.
+`Surface_voronoi::weight_for_length()` gives the weight for a length at a site, in these units.
 
 \cgalHasModel `CGAL::Biharmonic_embedding`
 \cgalHasModel `CGAL::Surface_voronoi::Euclidean_embedding`
@@ -65,7 +65,7 @@ public:
   /// writes the `dimension()` coordinates of vertex `v` of `triangle_mesh()` to `out`, as
   /// values convertible to `double`, and returns the iterator past the last one written.
   /// The diagram passes a `double*` (other callers, such as
-  /// `Surface_voronoi::weight_for_squared_length()`, an iterator of a `std::vector<double>`),
+  /// `Surface_voronoi::weight_for_length()`, an iterator of a `std::vector<double>`),
   /// so the member is a template on the output iterator.
   /// \pre The coordinates are finite numbers.
   template <class OutputIterator>

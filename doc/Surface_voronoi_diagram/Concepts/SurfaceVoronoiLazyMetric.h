@@ -39,8 +39,9 @@ shared, the distances computed for a set of sites may not).
 
 <b>Units.</b> Power weights (named parameter `Surface_voronoi::parameters::site_weight_map`)
 are in the units of the squared distances the model returns.
-`Surface_voronoi::weight_for_squared_length()` takes them to be squared lengths, as they are
-for `CGAL::Surface_voronoi::Geodesic_metric`, and returns the squared length unchanged.
+`Surface_voronoi::weight_for_length()` measures these units around a site: it calls
+`set_sites()` with the site and sites at vertices around it, and compares `squared_distance()`
+between them, so a term of the vertex alone added to all sites' values does not count.
 
 \cgalHasModel `CGAL::Surface_voronoi::Geodesic_metric`
 \cgalHasModel `CGAL::Surface_voronoi::Biharmonic_green_metric`

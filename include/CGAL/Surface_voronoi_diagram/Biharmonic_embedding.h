@@ -83,11 +83,12 @@ Biharmonic_options
 /// indicator) and deflated: the eigen-solver is asked only for the \f$ d \f$ non-zero
 /// eigenpairs, so that an assembly of a hundred parts and more works like one part.
 ///
-/// <b>Units.</b> The embedding scales like the mesh, but its squared distances are about an
-/// order of magnitude smaller than squared lengths, by a ratio that depends on the mesh and on
-/// \f$ d \f$ (0.087 to 0.100 on the bundled lampshade with \f$ d = 10 \f$). Power weights are
-/// in these squared units: `Surface_voronoi::weight_for_squared_length()` converts a squared
-/// length.
+/// <b>Units.</b> The embedding scales like the mesh, but its squared distances are smaller than
+/// squared lengths, by a ratio that depends on \f$ d \f$, varies over the mesh, and differs
+/// from one direction to another where \f$ d \f$ is low against the size of a part (around a
+/// limb, say). Power weights are in these squared units:
+/// `Surface_voronoi::weight_for_length()` gives the weight for a length at a site, measured
+/// around that site.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 /// \tparam VertexPointMap a model of `ReadablePropertyMap` from vertices to points;

@@ -190,7 +190,7 @@ public:
   ///   \cgalParamNBegin{Surface_voronoi::parameters::site_weight_map}
   ///     \cgalParamDescription{power weights, which make the diagram a power diagram: a point
   ///       belongs to the site minimizing its squared distance minus the weight. Weights are in
-  ///       the squared units of the metric (see `Surface_voronoi::weight_for_squared_length()`);
+  ///       the squared units of the metric (see `Surface_voronoi::weight_for_length()`);
   ///       a large weight can empty other cells (counted in `statistics().empty_cells`)}
   ///     \cgalParamType{a model of `ReadablePropertyMap` whose key is the sites' type (as the
   ///       range holds them) or `std::size_t` (the site index), and whose value converts to `double`}
