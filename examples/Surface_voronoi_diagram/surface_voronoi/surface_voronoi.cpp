@@ -674,7 +674,7 @@ int run_main(int argc, char** argv)
       locations.push_back(l);
       site_points.push_back(q);
       lines.push_back(r.line);
-      weights.push_back(r.has_weight ? r.weight : 0.);   // in the input's units (squared lengths)
+      weights.push_back(r.has_weight ? r.weight : 0.);   // in the metric's squared units
     }
   }
   else
@@ -829,7 +829,7 @@ int run_main(int argc, char** argv)
   if(args.metric == "rvd") choices.candidates = SV::Candidate_selection::GLOBAL_NEAREST;
   if(std::any_of(weights.begin(), weights.end(), [](double w) { return w != 0; }))
   {
-    choices.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w, a squared length
+    choices.weights = weights;   // power diagram: |E(x) - E(s)|^2 - w, in the metric's squared units
     for(double& w : choices.weights) w = std::ldexp(w, -2 * args.scale);
   }
   // Lloyd relaxation on the input mesh (interpolation mode: one embedding for all steps);
