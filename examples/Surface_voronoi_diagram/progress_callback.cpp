@@ -25,8 +25,14 @@ int main(int argc, char** argv)
     std::cerr << "progress_callback: cannot read a triangle mesh from " << file << std::endl;
     return EXIT_FAILURE;
   }
-  auto report = [](double done) {
-    std::cout << "  " << int(100 * done) << "%" << std::endl;
+  // prints the progress in steps of 10% (the calls come far more often)
+  int shown = -1;
+  auto report = [&shown](double done) {
+    if(int(10 * done) != shown)
+    {
+      shown = int(10 * done);
+      std::cout << "  " << 10 * shown << "%" << std::endl;
+    }
     return true;   // go on
   };
   std::cout << "embedding" << std::endl;
@@ -39,11 +45,13 @@ int main(int argc, char** argv)
 
   // a user pressing "cancel" halfway: the callback says no once half of the work is done
   std::cout << "diagram, cancelled halfway" << std::endl;
+  shown = -1;
   CGAL::Surface_voronoi_diagram<Mesh> stopped(mesh, metric, sites,
       CGAL::parameters::callback([&](double done) { return report(done) && done < 0.5; }));
   std::cout << "cancelled: " << std::boolalpha << stopped.is_cancelled() << std::endl;
 
   std::cout << "diagram" << std::endl;
+  shown = -1;
   CGAL::Surface_voronoi_diagram<Mesh> diagram(mesh, metric, sites, CGAL::parameters::callback(report));
   std::cout << "cancelled: " << diagram.is_cancelled() << ", area of cell 0: " << diagram.cell_area(0) << std::endl;
   return stopped.is_cancelled() && !diagram.is_cancelled() ? EXIT_SUCCESS : EXIT_FAILURE;
