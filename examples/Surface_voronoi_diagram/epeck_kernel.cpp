@@ -6,7 +6,6 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
@@ -36,9 +35,9 @@ int main(int argc, char** argv)
   const CGAL::Epeck::Point_3 centroid = diagram.cell_centroids()[0];   // an Epeck point
   std::cout << "cell 0: centroid " << centroid << ", area " << diagram.cell_area(0) << std::endl;
 
-  // the same mesh with Epick points (copy_face_graph keeps the vertices' order)
+  // the same file read with Epick points
   Mesh inexact;
-  CGAL::copy_face_graph(mesh, inexact);
+  if(!CGAL::IO::read_polygon_mesh(file, inexact) || num_vertices(inexact) != num_vertices(mesh)) return EXIT_FAILURE;
   std::vector<Mesh::Vertex_index> inexact_sites;
   for(Exact_mesh::Vertex_index v : sites) inexact_sites.push_back(Mesh::Vertex_index(Mesh::size_type(v)));
   CGAL::Biharmonic_embedding<Mesh> inexact_metric(inexact);
