@@ -33,4 +33,8 @@ run vertex_point_map --
 run voronoi_polygon_mesh -- voronoi_cells.off
 run bisector_polylines -- bisectors.polylines.txt
 run site_maps -- site_maps.ply
+run validate_input --
+run progress_callback --
+run parallel_diagram data/lampshade_thin.off 2 --
+run epeck_kernel --
 echo "all examples ran; outputs in $build/run"
