@@ -37,7 +37,7 @@ TEST_CASE("examples: every built example is listed and shown in the manual", "[e
   const std::string root = SVD_SOURCE_DIR;
   const std::string cmake = read_text(root + "/examples/Surface_voronoi_diagram/CMakeLists.txt");
   std::smatch list;
-  REQUIRE(std::regex_search(cmake, list, std::regex("foreach\\(example([^)]*)\\)")));
+  REQUIRE(std::regex_search(cmake, list, std::regex("set\\(SVD_EXAMPLES([^)]*)\\)")));
   std::set<std::string> built = matches(list[1].str(), std::regex("([A-Za-z_0-9]+)"));
   // and the ones built on a condition (draw_diagram needs Qt5)
   for(const std::string& name : matches(cmake, std::regex("add_executable\\((\\w+) ")))
