@@ -318,15 +318,15 @@ def read_arrangement(path):
     pts = struct.unpack_from("<%dd" % (3 * nv), data, end)
     pos = end + 24 * nv
     faces = []
-    unpack_from = struct.unpack_from
+    layouts = {}   # per number of vertices: ids, site, colour, input face
     for _ in range(nf):
         k = data[pos]
-        v = unpack_from("<%di" % k, data, pos + 1)
-        pos += 1 + 4 * k
-        site = unpack_from("<i", data, pos)[0]
-        input_face = unpack_from("<i", data, pos + 8)[0]
-        pos += 12
-        faces.append((v, site, input_face))
+        layout = layouts.get(k)
+        if layout is None:
+            layout = layouts[k] = struct.Struct("<%dii4Bi" % k)
+        w = layout.unpack_from(data, pos + 1)
+        pos += 1 + layout.size
+        faces.append((w[:k], w[k], w[-1]))
     return pts, faces
 
 
@@ -372,25 +372,31 @@ def arrangement_records(path):
             x = parent[x]
         return x
 
-    sides = {}
-    for i, (v, _, _) in enumerate(faces):
-        for j in range(len(v)):
-            a, b = v[j], v[(j + 1) % len(v)]
-            sides.setdefault((a, b) if a < b else (b, a), []).append(i)
+    # the arrangement is a polygon mesh: a side has one face, or two sharing its vertex ids
+    open_sides = {}
     pairs = set()
-    for (a, b), fs in sides.items():
-        for x in range(len(fs)):
-            for y in range(x + 1, len(fs)):
-                i, j = fs[x], fs[y]
-                si, sj = faces[i][1], faces[j][1]
-                if si == sj:
-                    ri, rj = find(i), find(j)
-                    if ri != rj:
-                        parent[ri] = rj
-                elif si >= 0 and sj >= 0 and areas[i] >= tiny and areas[j] >= tiny:
-                    d2 = sum((pts[3 * a + k] - pts[3 * b + k]) ** 2 for k in range(3))
+    nv = len(pts) // 3
+    for i, (v, si, _) in enumerate(faces):
+        n = len(v)
+        for j in range(n):
+            a, b = v[j], v[j + 1 if j + 1 < n else 0]
+            key = a * nv + b if a < b else b * nv + a
+            other = open_sides.pop(key, None)
+            if other is None:
+                open_sides[key] = i
+                continue
+            sj = faces[other][1]
+            if si == sj:
+                ri, rj = find(i), find(other)
+                if ri != rj:
+                    parent[ri] = rj
+            elif si >= 0 and sj >= 0:
+                pair = (si, sj) if si < sj else (sj, si)
+                if pair not in pairs and areas[i] >= tiny and areas[other] >= tiny:
+                    d2 = (pts[3 * a] - pts[3 * b]) ** 2 + (pts[3 * a + 1] - pts[3 * b + 1]) ** 2 + \
+                         (pts[3 * a + 2] - pts[3 * b + 2]) ** 2
                     if d2 >= short2:
-                        pairs.add((min(si, sj), max(si, sj)))
+                        pairs.add(pair)
     site_count = 1 + max([s for _, s, _ in faces] + [-1])
     roots = [set() for _ in range(site_count)]
     site_area = [[] for _ in range(site_count)]
