@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs the regression matrix (test/Surface_voronoi_diagram/regression/run_matrix.py) with a
 # Release build of the surface_voronoi program: every recorded program run must give the same
-# files bit for bit. Real-model entries run only when ../shared/data/meshes exists.
+# cells, counts and areas (within the tolerances run_matrix.py states). Real-model entries run
+# only when ../shared/data/meshes exists.
 #   sh scripts/check_regression.sh [BUILD] [run_matrix.py options...]   (BUILD: build/release)
 set -e
 cd "$(dirname "$0")/.."

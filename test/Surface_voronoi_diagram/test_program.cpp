@@ -693,6 +693,7 @@ struct Arrangement_ply
   std::vector<std::vector<std::size_t>> faces;
   std::vector<int> sites;
   std::vector<std::array<unsigned char, 4>> colors;
+  std::vector<int> input_faces;
 };
 
 // Reads the binary PLY written by the program, checking its header line by line
@@ -728,7 +729,8 @@ Arrangement_ply read_arrangement(const fs::path& path)
     "ply", "format binary_little_endian 1.0", "element vertex " + std::to_string(nv),
     "property double x", "property double y", "property double z",
     "element face " + std::to_string(nf), "property list uchar int vertex_indices", "property int site",
-    "property uchar red", "property uchar green", "property uchar blue", "property uchar alpha", "end_header"
+    "property uchar red", "property uchar green", "property uchar blue", "property uchar alpha",
+    "property int input_face", "end_header"
   };
   REQUIRE(lines == expected);
 
@@ -750,6 +752,7 @@ Arrangement_ply read_arrangement(const fs::path& path)
   a.faces.resize(nf);
   a.sites.resize(nf);
   a.colors.resize(nf);
+  a.input_faces.resize(nf);
   for(std::size_t f = 0; f < nf && !truncated; ++f)
   {
     unsigned char n = 0;
@@ -764,6 +767,9 @@ Arrangement_ply read_arrangement(const fs::path& path)
     take(&site, 4);
     a.sites[f] = site;
     take(a.colors[f].data(), 4);
+    std::int32_t input_face = 0;
+    take(&input_face, 4);
+    a.input_faces[f] = input_face;
   }
   REQUIRE(!truncated);
   CHECK(pos == bytes.size());
@@ -782,11 +788,18 @@ void check_cgal_reads_back(const fs::path& path, const Arrangement_ply& a)
   REQUIRE(num_vertices(sm) == a.vertices.size());
   REQUIRE(num_faces(sm) == a.faces.size());
   auto site = sm.property_map<SM::Face_index, std::int32_t>("f:site");
+  auto input_face = sm.property_map<SM::Face_index, std::int32_t>("f:input_face");
   REQUIRE(site.second);
-  std::size_t k = 0, site_mismatch = 0, point_mismatch = 0;
+  REQUIRE(input_face.second);
+  std::size_t k = 0, site_mismatch = 0, input_face_mismatch = 0, point_mismatch = 0;
   for(SM::Face_index f : sm.faces())
-    if(site.first[f] != a.sites[k++])
+  {
+    if(site.first[f] != a.sites[k])
       ++site_mismatch;
+    if(input_face.first[f] != a.input_faces[k])
+      ++input_face_mismatch;
+    ++k;
+  }
   k = 0;
   for(SM::Vertex_index v : sm.vertices())
   {
@@ -796,6 +809,7 @@ void check_cgal_reads_back(const fs::path& path, const Arrangement_ply& a)
       ++point_mismatch;
   }
   CHECK(site_mismatch == 0);
+  CHECK(input_face_mismatch == 0);
   CHECK(point_mismatch == 0);
 }
 
@@ -857,7 +871,10 @@ Arrangement_summary check_arrangement(const Arrangement_ply& a, const Soup& inpu
         first = element + " " + std::to_string(index) + ": " + what;
     }
   };
-  Tally non_finite, bad_index, bad_site, degenerate, repeated_corner, non_planar, non_convex, outside;
+  Tally non_finite, bad_index, bad_site, degenerate, repeated_corner, non_planar, non_convex, outside, split_input_face;
+  // each face of the program's mesh lies inside one input polygon: the pieces naming one
+  // input_face lie in one (slivers narrower than the tolerance may sit on a shared side)
+  std::map<int, std::size_t> host_of_input_face;
   for(std::size_t v = 0; v < a.vertices.size(); ++v)
   {
     const V3& p = a.vertices[v];
@@ -971,7 +988,21 @@ Arrangement_summary check_arrangement(const Arrangement_ply& a, const Soup& inpu
       outside.add("face", f, "inside no single input face");
     }
     else
+    {
       covered[host] += area;
+      double perimeter = 0;
+      for(std::size_t i = 0; i < p.size(); ++i)
+        perimeter += distance(p[i], p[(i + 1) % p.size()]);
+      if(a.input_faces[f] < 0)
+        split_input_face.add("face", f, "input_face " + std::to_string(a.input_faces[f]));
+      else if(area > tol * perimeter)
+      {
+        const auto known = host_of_input_face.emplace(a.input_faces[f], host);
+        if(known.first->second != host)
+          split_input_face.add("face", f, "input_face " + std::to_string(a.input_faces[f]) + " lies in input polygons "
+                               + std::to_string(known.first->second) + " and " + std::to_string(host));
+      }
+    }
   }
 
   double worst_cover = 0;
@@ -994,7 +1025,8 @@ Arrangement_summary check_arrangement(const Arrangement_ply& a, const Soup& inpu
                             std::make_pair("faces with a repeated corner", &repeated_corner),
                             std::make_pair("non-planar faces", &non_planar),
                             std::make_pair("non-convex faces", &non_convex),
-                            std::make_pair("faces inside no single input face", &outside) })
+                            std::make_pair("faces inside no single input face", &outside),
+                            std::make_pair("faces naming a wrong input face", &split_input_face) })
   {
     INFO(tally.first << ": " << tally.second->count << ", first " << tally.second->first);
     CHECK(tally.second->count == 0);

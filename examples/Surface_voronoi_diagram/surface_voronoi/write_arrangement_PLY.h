@@ -3,8 +3,10 @@
 //
 // The surface_voronoi program's --output file: a diagram's arrangement as a coloured PLY that
 // MeshLab and ParaView show as is. Vertices `double x y z`; faces `vertex_indices`, `int site`
-// (-1 where no site reaches) and `uchar red green blue alpha` (the library's site_color()).
-// Outside checks compare these bytes: the layout must not change.
+// (-1 where no site reaches), `uchar red green blue alpha` (the library's site_color()) and
+// `int input_face`, the face of the diagram's mesh that holds the piece (for the regression
+// matrix, which compares cells face by face). Outside checks read these properties: the
+// documented ones keep their layout, and new ones come after them.
 
 #ifndef SVD_PROGRAM_WRITE_ARRANGEMENT_PLY_H
 #define SVD_PROGRAM_WRITE_ARRANGEMENT_PLY_H
@@ -33,7 +35,8 @@
 namespace svd_program {
 
 /// The arrangement as a `Surface_mesh` of double points with the face properties
-/// `f:site` (`std::int32_t`) and `f:color`, ready for CGAL's PLY writer.
+/// `f:site` (`std::int32_t`), `f:color` and `f:input_face` (`std::int32_t`), ready for
+/// CGAL's PLY writer.
 template <class Diagram>
 CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> arrangement_for_PLY(const Diagram& diagram)
 {
@@ -44,6 +47,13 @@ CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> arrangement_for_PLY(
   auto color = out.add_property_map<Mesh::Face_index, CGAL::IO::Color>("f:color").first;
   for(Mesh::Face_index f : out.faces())
     color[f] = CGAL::Surface_voronoi::site_color(site[f]);
+  // make_arrangement() adds one face for each piece, in the partition's order
+  const auto& pieces = CGAL::Surface_voronoi::internal::Diagram_access::data(diagram).partition.pieces;
+  CGAL_assertion(out.number_of_faces() == pieces.size());
+  auto input_face = out.add_property_map<Mesh::Face_index, std::int32_t>("f:input_face", -1).first;
+  std::size_t k = 0;
+  for(Mesh::Face_index f : out.faces())
+    input_face[f] = static_cast<std::int32_t>(pieces[k++].face);
   return out;
 }
 
@@ -96,7 +106,7 @@ bool write_arrangement_binary_PLY(std::ostream& os, const Diagram& diagram, int 
      << "comment surface_voronoi arrangement\nelement vertex " << order.size()
      << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << partition.pieces.size()
      << "\nproperty list uchar int vertex_indices\nproperty int site\nproperty uchar red\nproperty uchar green"
-     << "\nproperty uchar blue\nproperty uchar alpha\nend_header\n";
+     << "\nproperty uchar blue\nproperty uchar alpha\nproperty int input_face\nend_header\n";
   // a site's colour once, not once for each of its faces
   std::vector<CGAL::IO::Color> colors(data.sites.size());
   for(std::size_t i = 0; i < colors.size(); ++i) colors[i] = SV::site_color(std::int64_t(i));
@@ -126,6 +136,7 @@ bool write_arrangement_binary_PLY(std::ostream& os, const Diagram& diagram, int 
     const CGAL::IO::Color color = site < 0 ? no_site_color
                                   : std::size_t(site) < colors.size() ? colors[std::size_t(site)] : SV::site_color(site);
     for(int k = 0; k < 4; ++k) internal::append_bytes(buffer, static_cast<unsigned char>(color[k]));
+    internal::append_bytes(buffer, static_cast<std::int32_t>(piece.face));
     if(buffer.size() >= flush_at && !flush()) return false;
   }
   return flush();
