@@ -31,7 +31,7 @@ tolerating what may (a change of summation order moves the last bits, not the di
 The surface area is the sum of the arrangement's pieces. The expected records are committed
 in expected.txt; a run compares them entry by entry and prints every difference.
 
-  run_matrix.py PROGRAM [--record] [--data DIR] [--work DIR] [--only SUBSTRING] [--keep]
+  run_matrix.py PROGRAM [--record] [--data DIR] [--work DIR] [--only SUBSTRING] [--part K/N] [--keep]
 
 PROGRAM     the surface_voronoi binary
 --record    write expected.txt from this run (only after checking why it changed)
@@ -39,6 +39,8 @@ PROGRAM     the surface_voronoi binary
             when it exists); their entries are compared only when the folder is there
 --work DIR  where outputs go (default: build/regression)
 --only S    run only the entries whose name contains S
+--part K/N  run only the K-th of N interleaved shares of the entries (1 <= K <= N), so that
+            N processes run the matrix side by side (ctest runs it in two parts)
 --keep      keep the outputs
 
 Inputs are files: the bundled example mesh, three generated shells written out once (in
@@ -570,8 +572,12 @@ def main():
     ap.add_argument("--data", default=os.path.join(SOURCE, "..", "shared", "data", "meshes"))
     ap.add_argument("--work", default=os.path.join(SOURCE, "build", "regression"))
     ap.add_argument("--only", default="")
+    ap.add_argument("--part", default="1/1")
     ap.add_argument("--keep", action="store_true")
     a = ap.parse_args()
+    part, parts = (int(x) for x in a.part.split("/"))
+    if not 1 <= part <= parts:
+        raise SystemExit("--part K/N needs 1 <= K <= N")
     program = os.path.abspath(a.program)
     work = os.path.abspath(a.work)
 
@@ -579,8 +585,16 @@ def main():
     generated, real = meshes(a.data)
     produced = {}
     failed = []
+    chosen = set()
+    index = 0
     for mesh_name, path, is_real in generated + real:
-        plan = [e for e in entries_for(mesh_name, is_real) if a.only in e[0]]
+        for e in entries_for(mesh_name, is_real):
+            if a.only in e[0]:
+                if index % parts == part - 1:
+                    chosen.add(e[0])
+                index += 1
+    for mesh_name, path, is_real in generated + real:
+        plan = [e for e in entries_for(mesh_name, is_real) if e[0] in chosen]
         if not plan:
             continue
         inputs = prepare_inputs(mesh_name, path, work)
@@ -616,7 +630,7 @@ def main():
         return 0
 
     missing = [n for n in produced if n not in expected]
-    skipped = [n for n in expected if n not in produced and (a.only in n)]
+    skipped = [n for n in expected if n not in produced and (a.only in n) and parts == 1]
     print("matrix: %d entries run, %d match, %d changed, %d not recorded, %d recorded but not run"
           % (len(produced), len(produced) - len(failed) - len(missing), len(failed), len(missing), len(skipped)))
     return 1 if failed or missing else 0
