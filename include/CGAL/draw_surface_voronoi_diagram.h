@@ -1,5 +1,13 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // Interactive viewing of a diagram with CGAL's Basic_viewer_qt, as CGAL's own draw_*.h
 // headers do for their classes. The viewer needs Qt5 (Debian: libcgal-qt5-dev) and is enabled
@@ -9,6 +17,8 @@
 
 #ifndef CGAL_DRAW_SURFACE_VORONOI_DIAGRAM_H
 #define CGAL_DRAW_SURFACE_VORONOI_DIAGRAM_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram.h>
 
@@ -26,9 +36,7 @@ namespace CGAL {
 /// `CGAL_TEST_SUITE` is defined (as a macro or an environment variable) it returns at once and
 /// opens no window.
 ///
-/// Include `<CGAL/draw_surface_voronoi_diagram.h>`. In version 0.1 this function was
-/// `Surface_voronoi::draw()` in `<CGAL/Surface_voronoi_diagram/draw.h>`; both still work, as
-/// deprecated forwards to this one, for one release.
+/// Include `<CGAL/draw_surface_voronoi_diagram.h>`.
 /// \param diagram the diagram to draw
 /// \param title the title of the window
 template <class TriangleMesh, class Metric, class VertexPointMap, class GeomTraits, class ConcurrencyTag>
@@ -148,24 +156,6 @@ void draw(const Surface_voronoi_diagram<DiagramParameters...>&, const char* = ""
 } // namespace CGAL
 
 #endif // CGAL_USE_BASIC_VIEWER
-
-#ifndef CGAL_NO_DEPRECATED_CODE
-namespace CGAL {
-namespace Surface_voronoi {
-
-// Deprecated since 0.2, kept for one release: the function is CGAL::draw() (this header),
-// as for CGAL's other classes. The old signature, for any diagram type: being less specialized
-// than CGAL::draw(), it never makes an unqualified draw(diagram) ambiguous.
-template <class Diagram>
-CGAL_DEPRECATED_MSG("use CGAL::draw() from <CGAL/draw_surface_voronoi_diagram.h>")
-inline void draw(const Diagram& diagram, const char* title = "Surface Voronoi diagram")
-{
-  CGAL::draw(diagram, title);
-}
-
-} // namespace Surface_voronoi
-} // namespace CGAL
-#endif // CGAL_NO_DEPRECATED_CODE
 
 #endif // DOXYGEN_RUNNING
 

@@ -1,11 +1,21 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // The package's one colour scheme for cells: a colour per site index, the same in the
 // program's PLY files, in draw() and in the manual's figures.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SITE_COLORS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_SITE_COLORS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/IO/Color.h>
 

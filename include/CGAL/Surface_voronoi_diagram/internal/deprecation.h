@@ -15,6 +15,8 @@
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DEPRECATION_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_DEPRECATION_H
 
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
 #if defined(__GNUC__) || defined(__clang__)
 #  define CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN \
      _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wdeprecated-declarations\"")

@@ -1,11 +1,21 @@
 // Copyright (c) 2026 The Surface_voronoi_diagram authors.
-// SPDX-License-Identifier: GPL-3.0-or-later
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
 //
 // The working copy that site insertion and refinement both start from: a Surface_mesh copy
 // of the input whose faces remember the input face they lie in.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_WORKING_COPY_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_WORKING_COPY_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/helpers.h>
