@@ -1,7 +1,5 @@
 // CGAL::draw() for a diagram (CGAL/draw_surface_voronoi_diagram.h) without the Qt viewer: it
-// compiles, prints a message and returns. The deprecated header and function of 0.1
-// (CGAL/Surface_voronoi_diagram/draw.h, Surface_voronoi::draw()) are tested in
-// test_deprecated.cpp, with the other deprecated names.
+// compiles, prints a message and returns.
 #include "test_support.h"
 
 #include <CGAL/draw_surface_voronoi_diagram.h>

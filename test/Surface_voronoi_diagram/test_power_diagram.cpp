@@ -128,7 +128,6 @@ TEST_CASE("power: a vertex weight map gives exactly the diagram of the equivalen
   CHECK(changed > sites.size() / 2);
 
   // the map chains with CGAL's named parameters, as the head of the chain or appended to it
-  // (the deprecated Diagram_options given together with the map: test_deprecated.cpp)
   auto none = m.add_property_map<Mesh::Edge_index, bool>("e:none", false).first;
   Diagram chained(m, e, sites, SV::parameters::site_weight_map(w).edge_is_constrained_map(none));
   require_same_partition(chained, from_vector);

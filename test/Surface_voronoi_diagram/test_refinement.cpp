@@ -73,8 +73,7 @@ TEST_CASE("refinement: the same surface, short edges, the sites in place", "[ref
   for(auto v : vertices(refined)) same += (twice_mesh.point(v) == refined.point(v));
   CHECK(same == num_vertices(refined));
 
-  // too few vertices allowed: the refinement stops there and says so (the deprecated overload
-  // threw Input_error instead: test_deprecated.cpp)
+  // too few vertices allowed: the refinement stops there and says so
   Mesh tiny_mesh;
   const auto tiny = SV::refine_for_sites(m, sites, tiny_mesh, SV::parameters::refinement_max_vertices(100));
   CHECK(tiny.vertex_limit_reached);

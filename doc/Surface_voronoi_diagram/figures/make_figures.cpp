@@ -17,7 +17,7 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/feature_sites.h>
-#include <CGAL/Surface_voronoi_diagram/lloyd.h>
+#include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 
 #include "render_PNG.h"

@@ -226,10 +226,6 @@ public:
     compute_offset(points);
   }
 
-  /// \deprecated the mesh is the one the metric was built on: use `set_sites(sites)`
-  CGAL_DEPRECATED_MSG("use set_sites(sites)")
-  void set_sites(const TriangleMesh&, const std::vector<Face_location>& sites) { set_sites(sites); }
-
   /// the squared biharmonic distance between site `i` and vertex `v`, minus the smallest one
   /// of any site to `v` (see the class's description)
   /// \pre `set_sites()` was called
@@ -267,7 +263,7 @@ private:
     const std::size_t block = Green_function::block_size;
     const std::size_t n = m_mesh->number_of_vertices();
     const Green_function& green = *m_green;
-    // a run of 8 blocks reuses its buffers (n * 16 doubles each, 2.8 MB at 22k vertices)
+    // a run of 8 blocks reuses its buffers (n * 16 doubles each)
     internal::for_each_chunk(missing.size(), 8 * block, internal::use_threads<ConcurrencyTag>(),
                              [&](std::size_t run_begin, std::size_t run_end, std::size_t) {
       std::vector<double> X, workspace;

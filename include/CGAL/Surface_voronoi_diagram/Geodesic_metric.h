@@ -164,10 +164,6 @@ public:
     m_marching->set_seeds(seeds);
   }
 
-  /// \deprecated the mesh is the one the metric was built on: use `set_sites(sites)`
-  CGAL_DEPRECATED_MSG("use set_sites(sites)")
-  void set_sites(const TriangleMesh&, const std::vector<Face_location>& sites) { set_sites(sites); }
-
   /// the squared geodesic distance between site `i` and vertex `v`
   /// \pre `set_sites()` was called
   /// \throws Input_error if `i` is not a site index
@@ -190,7 +186,7 @@ public:
   }
 
   /// Frees the distances computed so far, whose memory grows with the area the fronts
-  /// covered (0.8 GB for 100k sites on a mesh of 2.1M vertices). A distance asked afterwards
+  /// covered. A distance asked afterwards
   /// is marched again from its site, to the same value. A diagram calls it once its
   /// propagation is done, before it cuts and stitches the faces.
   void forget_distances()

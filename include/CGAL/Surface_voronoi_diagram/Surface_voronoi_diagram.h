@@ -23,11 +23,9 @@
 #include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
-#include <CGAL/Surface_voronoi_diagram/options.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_geometry.h>
-#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_builder.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -281,28 +279,6 @@ public:
   {
     construct(metric, sites, np);
   }
-
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-  /// \deprecated Use the named parameters instead of `Surface_voronoi::Diagram_options`:
-  /// `site_weight_map` (for `weights`, e.g. `CGAL::make_property_map(weights)`),
-  /// `candidate_selection`, `repair_cells`, `max_repair_rounds` and `max_site_distance`.
-  template <class SiteRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
-  CGAL_DEPRECATED_MSG("use the named parameters of Surface_voronoi_diagram")
-  Surface_voronoi_diagram(const TriangleMesh& tm, Metric& metric, const SiteRange& sites,
-                          const Surface_voronoi::Diagram_options& options,
-                          const NamedParameters& np = CGAL::parameters::default_values())
-    : m_tm(&tm)
-  {
-    namespace SVp = Surface_voronoi::parameters;
-    const auto chain = SVp::candidate_selection(options.candidates, SVp::repair_cells(options.repair,
-                       SVp::max_repair_rounds(options.max_repair_rounds, SVp::max_site_distance(options.max_site_distance, np))));
-    if(options.weights.empty())
-      construct(metric, sites, chain);
-    else
-      construct(metric, sites, SVp::site_weight_map(CGAL::make_property_map(options.weights), chain));
-  }
-
-CGAL_SURFACE_VORONOI_DEPRECATED_END
 
   /// \cond SKIP_IN_MANUAL
   Surface_voronoi_diagram(Surface_voronoi_diagram&&) = default;

@@ -19,7 +19,6 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/Surface_voronoi_diagram.h>
-#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Nearest_point_of_cell.h>
@@ -277,28 +276,6 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   result.sites = sites;
   return result;
 }
-
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use `lloyd_relaxation(tm, metric, sites, np)`: the number of iterations is the
-/// named parameter `number_of_iterations`, and the options of the diagram are its named
-/// parameters (see `Surface_voronoi::Diagram_options`).
-template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class Metric>
-CGAL_DEPRECATED_MSG("use the named parameters number_of_iterations and those of the diagram")
-Lloyd_result<TriangleMesh>
-lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
-                 std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > sites,
-                 std::size_t iterations, const Diagram_options& options = Diagram_options())
-{
-  namespace SVp = Surface_voronoi::parameters;
-  const auto np = SVp::candidate_selection(options.candidates, SVp::repair_cells(options.repair,
-                  SVp::max_repair_rounds(options.max_repair_rounds, SVp::max_site_distance(options.max_site_distance,
-                  CGAL::parameters::number_of_iterations(iterations)))));
-  if(options.weights.empty())
-    return lloyd_relaxation<ConcurrencyTag>(tm, metric, std::move(sites), np);
-  return lloyd_relaxation<ConcurrencyTag>(tm, metric, std::move(sites), SVp::site_weight_map(CGAL::make_property_map(options.weights), np));
-}
-CGAL_SURFACE_VORONOI_DEPRECATED_END
 
 
 } // namespace Surface_voronoi

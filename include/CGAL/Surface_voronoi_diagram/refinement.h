@@ -20,9 +20,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
-#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Local_site_spacing.h>
 
@@ -48,27 +46,6 @@
 
 namespace CGAL {
 namespace Surface_voronoi {
-
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use the named parameters `Surface_voronoi::parameters::refinement_trigger_ratio`,
-/// `Surface_voronoi::parameters::refinement_edge_length_ratio` and
-/// `Surface_voronoi::parameters::refinement_max_vertices` of
-/// `refine_for_sites(tm, sites, out, np_in, np_out)`.
-struct CGAL_DEPRECATED_MSG("use the named parameters of refine_for_sites")
-Refinement_options
-{
-  /// see `refinement_trigger_ratio`
-  double trigger_ratio = 0.75;
-  /// see `refinement_edge_length_ratio`
-  double edge_length_ratio = 0.4;
-  /// see `refinement_max_vertices`
-  std::size_t max_vertices = 20000000;
-};
-namespace internal {
-template <class T> struct Is_refinement_options : std::is_same<typename std::remove_cv<T>::type, Refinement_options> {};
-} // namespace internal
-CGAL_SURFACE_VORONOI_DEPRECATED_END
 
 namespace internal {
 // The halfedge an edge is split from. A Surface_mesh edge descriptor remembers the halfedge
@@ -132,8 +109,8 @@ struct Refined_sites
 ///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_trigger_ratio}
 ///     \cgalParamDescription{`t`: edges longer than `t` times the site spacing are split}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{0.75 (measured with the geodesic metric on the benchmark's models:
-///       every model within 3% of the exact geodesic diagram at 100 and 1000 sites)}
+///     \cgalParamDefault{0.75 (chosen with the geodesic metric against exact geodesic
+///       diagrams)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Surface_voronoi::parameters::refinement_edge_length_ratio}
 ///     \cgalParamDescription{`r`: the length, relative to the site spacing, that splitting goes down to}
@@ -180,9 +157,6 @@ struct Refined_sites
 template <class TriangleMesh, class LocationRange, class PolygonMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
           class NamedParametersOut = CGAL::parameters::Default_named_parameters
-#ifndef DOXYGEN_RUNNING
-          , typename std::enable_if<!internal::Is_refinement_options<PolygonMesh>::value, int>::type = 0
-#endif
           >
 Refined_sites<PolygonMesh>
 refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh& out,
@@ -351,61 +325,6 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
   }
   return r;
 }
-
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated What the deprecated `refine_for_sites(tm, sites, options, np)` overload returns;
-/// `refine_for_sites(tm, sites, out, np_in, np_out)` writes into a mesh of the caller's type
-/// and returns a `Refined_sites`.
-template <class TriangleMesh, class Point_3>
-struct Refinement_result
-{
-  /// the refined mesh
-  typedef CGAL::Surface_mesh<Point_3> Mesh;
-  /// a location on it
-  typedef CGAL::Polygon_mesh_processing::Face_location<Mesh, double> Location;
-  /// the refined mesh
-  Mesh mesh;
-  /// the sites on `mesh`
-  std::vector<Location> sites;
-  /// for each face of `mesh`, the input face that contains it
-  typename Mesh::template Property_map<typename Mesh::Face_index,
-                                       typename boost::graph_traits<TriangleMesh>::face_descriptor> input_face;
-  /// the length edges are split down to
-  double target_edge_length = 0;
-  /// the number of edges split
-  std::size_t edges_split = 0;
-};
-
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use `refine_for_sites(tm, sites, out, np_in, np_out)`, which writes into a
-/// mesh of the caller's type. Throws `Input_error` when the vertex limit is reached.
-template <class TriangleMesh, class LocationRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
-CGAL_DEPRECATED_MSG("use refine_for_sites(tm, sites, out, np_in, np_out)")
-Refinement_result<TriangleMesh,
-                  typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type>
-refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, const Refinement_options& options = Refinement_options(),
-                 const NamedParameters& np = CGAL::parameters::default_values())
-{
-  typedef typename boost::property_traits<typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type>::value_type Point_3;
-  typedef Refinement_result<TriangleMesh, Point_3> Result;
-  Result r;
-  r.input_face = r.mesh.template add_property_map<typename Result::Mesh::Face_index,
-                   typename boost::graph_traits<TriangleMesh>::face_descriptor>("f:svd_input_face").first;
-  namespace SVp = Surface_voronoi::parameters;
-  const Refined_sites<typename Result::Mesh> refined = refine_for_sites(tm, sites, r.mesh,
-      SVp::refinement_trigger_ratio(options.trigger_ratio, SVp::refinement_edge_length_ratio(options.edge_length_ratio,
-      SVp::refinement_max_vertices(options.max_vertices, np))),
-      SVp::input_face_map(r.input_face));
-  if(refined.vertex_limit_reached)
-    throw Input_error("refine_for_sites: the refined mesh would exceed " + std::to_string(options.max_vertices) + " vertices");
-  r.sites = refined.sites;
-  r.target_edge_length = refined.target_edge_length;
-  r.edges_split = refined.edges_split;
-  return r;
-}
-CGAL_SURFACE_VORONOI_DEPRECATED_END
 
 
 } // namespace Surface_voronoi

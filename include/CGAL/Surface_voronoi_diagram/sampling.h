@@ -252,17 +252,6 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
   return out;
 }
 
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use `random_sites(tm, n, CGAL::parameters::random_seed(seed))`: the seed is
-/// the named parameter `random_seed`.
-template <class TriangleMesh>
-CGAL_DEPRECATED_MSG("use the named parameter random_seed")
-std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
-random_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
-{
-  return random_sites(tm, n, CGAL::parameters::random_seed(seed));
-}
-
 /// \ingroup PkgSurfaceVoronoiDiagramSites
 /// `n` blue-noise face locations of `tm` by weighted sample elimination
 /// \cgalCite{cgal:y-segpd-15} over `5 n` area-uniform candidates (`random_sites()`): the
@@ -451,17 +440,6 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   for(std::size_t i = 0; i < m; ++i)
     if(!removed[i]) out.push_back(candidates[i]);
   return out;
-}
-
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use `blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed))`: the seed
-/// is the named parameter `random_seed`.
-template <class TriangleMesh>
-CGAL_DEPRECATED_MSG("use the named parameter random_seed")
-std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >
-blue_noise_sites(const TriangleMesh& tm, std::size_t n, unsigned int seed)
-{
-  return blue_noise_sites(tm, n, CGAL::parameters::random_seed(seed));
 }
 
 } // namespace Surface_voronoi
