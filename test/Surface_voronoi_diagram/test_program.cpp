@@ -2454,8 +2454,8 @@ TEST_CASE("program: the huge-page advice, given (SVD_HUGE_PAGES=1), left out (=0
 
 TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 naming --no-refine", "[program][numerics]")
 {
-  // Before: a 1 x 1e-6 strip of two needles refined past 500,000 vertices for 2 sites and
-  // kept going (over 2 GB) for 10 sites.
+  // Without the cap, a 1 x 1e-6 strip of two needles is refined without end: each split
+  // leaves needles as long as before.
   Temp_dir dir;
   write_bytes(dir / "strip.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1e-6 0\n0 1e-6 0\n3 0 1 2\n3 0 2 3\n");
   for(const std::string n : { "2", "10", "200" })
@@ -2478,8 +2478,8 @@ TEST_CASE("program: the geodesic refinement stops at its cap quickly, exit 1 nam
 
 TEST_CASE("program: site counts are limited (10,000,000 in all; 2048 per face)", "[program][numerics]")
 {
-  // Before: --random 100000000 on a tetrahedron ran for minutes without a message, and
-  // --random 10000 took 12 s (every site a candidate of every face).
+  // Without the limits, --random 100000000 on a tetrahedron runs for minutes without a
+  // message, and --random 10000 makes every site a candidate of every face.
   Temp_dir dir;
   write_bytes(dir / "tet.off", tetrahedron_off("1"));
   const std::string mesh = (dir / "tet.off").string();

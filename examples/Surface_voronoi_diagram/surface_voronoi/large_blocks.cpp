@@ -9,41 +9,30 @@
 //
 // How the program's large blocks of memory are backed (Linux with glibc, without a
 // sanitizer; elsewhere the allocation functions are left alone). The library itself sets
-// nothing process-wide: a program of one's own may do the same (see the manual's section on
-// performance).
+// nothing process-wide: a program of one's own may do the same. large_blocks.md, beside this
+// file, gives what each setting was measured to change.
 //
 // - Blocks of 4 MB and more are mapped from the system and go back to it when freed
 //   (`mallopt(M_MMAP_THRESHOLD)`). By default glibc raises that threshold to 32 MB after the
-//   first large block is freed and keeps the freed blocks below it resident: at igea-537k with
-//   10k sites the biharmonic peak was 121 MiB higher (918 against 797 MiB).
+//   first large block is freed and keeps the freed blocks below it resident, which raises the
+//   peak of the biharmonic runs.
 // - The heap keeps up to 16 MB freed at its top instead of 128 KB (`M_TRIM_THRESHOLD`, which
 //   glibc stops adjusting once the mmap threshold is set): the diagrams of Lloyd's iterations
 //   free and allocate again arrays of a few MB each, which would otherwise be given back and
-//   touched afresh every iteration (boot, 3000 sites, 10 steps: 1.32 -> 0.80 s; the peaks at
-//   igea-537k move by less than 1 MiB).
+//   touched afresh every iteration.
 // - Those blocks are asked to be backed by transparent huge pages (`madvise(MADV_HUGEPAGE)`,
 //   which the kernel honours when its THP mode is `madvise` or `always`): one first touch of a
 //   2 MB page instead of 512 of 4 KB pages. A diagram writes most of its memory once, so a
-//   large share of its time is first touches, the more so on virtual machines: on the 2-core
-//   machine of the benchmark a first touch costs about 10 microseconds per 4 KB page (3 s per
-//   GiB), and igea-537k's Euclidean diagram took 353k of them; with the advice, 55k, and the
-//   whole run 0.51x the time for 2 MiB more at the peak.
+//   large share of its time is first touches, the more so on virtual machines.
 // - The main heap, where the blocks below 4 MB live, gets the same advice as it grows, and
 //   grows 4 MB at a time (`M_TOP_PAD`), so that the 2 MB ranges its blocks are first written
 //   in mostly lie inside it (glibc's `glibc.malloc.hugetlb=1` tunable does the same, but only
-//   from the environment at start-up). On boot with 10k sites, where most blocks are below
-//   4 MB: page faults 9.8k -> 6.2k, compute 0.250 -> 0.233 s (medians of 11, interleaved).
-//   Steps of 8 MB took the faults to 4.1k for the same compute, but raised the biharmonic
-//   peak at igea-537k by 11 MiB (huge pages half used at the heap's top), to 805 MiB; with
-//   4 MB steps it is 796 MiB (794 without the advice).
+//   from the environment at start-up). Larger steps leave huge pages half used at the heap's
+//   top.
 // - The advice is left out where the kernel gives freed 2 MB blocks back to the hypervisor
 //   (free page reporting, from a virtio balloon device, at an order of 9 or less): there every
 //   huge page the process gets was handed back and is backed afresh by the host at its first
-//   touch, 512 host faults under one guest fault. On such a machine (Firecracker, reporting at
-//   order 9) a first touch cost 2.8-3.6 s per GiB with huge pages against 0.41 s with 4 KB
-//   pages, and igea-537k's Euclidean diagram took 4.14 s with the advice, 3.55 s without (5
-//   interleaved runs, system time 1.14 against 0.54 s; two machines of that kind so far). On
-//   the machine where the advice halved the run, first touches of 4 KB pages cost 3 s per GiB.
+//   touch, 512 host faults under one guest fault, and the advice makes runs slower.
 //   `SVD_HUGE_PAGES=1` gives the advice and `SVD_HUGE_PAGES=0` leaves it out whatever the
 //   machine.
 

@@ -83,19 +83,15 @@ namespace {
 // The most sites --random, --blue-noise or a sites file may give.
 const long long max_sites = 10000000;
 // The most sites one input face may hold before the sites are inserted. A face is cut among
-// its candidate sites at a cost that grows faster than their square (measured on a cube: 256
-// per face take 0.3 s with the Euclidean metric and 1.6 s with the geodesic one; 2,500 per
-// face on a tetrahedron take 12 s); beyond this many, the program inserts the sites as
-// vertices (as --insert-sites does), or refines the mesh for them (the geodesic metric), so
-// that a coarse mesh takes many sites without a flag. An inserted site is placed by a scan of
-// its face's pieces (2,500 per face: 0.5 s; 25,000: over 30 s; 11,000 sites on a tetrahedron
-// take 9 s with the geodesic metric): the second limit.
+// its candidate sites at a cost that grows faster than their square; beyond this many, the
+// program inserts the sites as vertices (as --insert-sites does), or refines the mesh for
+// them (the geodesic metric), so that a coarse mesh takes many sites without a flag. An
+// inserted site is placed by a scan of its face's pieces, whose cost bounds the second limit.
 const std::size_t max_sites_per_face = 256;
 const std::size_t max_inserted_sites_per_face = 2048;
 // The geodesic refinement's cap: at most this many vertices per input vertex and site (the
-// regression models need up to 64), and never more than the ceiling (measured on a thin
-// strip of needles: 307,712 vertices reached in 1.2 s, 4,000,000 in 15 s on a loaded 2-core
-// machine: 1,000,000 is reached in about 4 s).
+// regression models need up to 64), and never more than the ceiling, so that a strip of
+// needle triangles cannot make the refinement run for minutes.
 const std::size_t refinement_vertices_per_element = 256;
 const std::size_t refinement_max_vertices = 1000000;
 // Meshes whose largest coordinate is beyond 2^100, or whose bounding box is smaller than
@@ -252,7 +248,7 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 // the metric of --dimension full, and of auto when its columns fit
 typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
 // The input mesh indexed once (after reading) for the validation, the metric, Lloyd and the
-// diagram; each would build its own copy otherwise (0.06-0.09 s and 60 MB at 537k vertices).
+// diagram; each would build its own copy otherwise.
 typedef std::shared_ptr<const SV::internal::Indexed_mesh<Mesh> > Shared_indexed_mesh;
 // the factorization and solves of the eigen-solver on every core (the same bits)
 typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Embedding_metric;
@@ -260,8 +256,8 @@ typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Def
 // The metric --metric names on the input mesh (the biharmonic one of the dimension given to
 // build()), built once and shared by the stages that work on that mesh: Lloyd, --valid-dual
 // and the final diagram. They thus share one eigen-solve or factorization, and the full
-// spectrum's columns of the sites that do not move (each stage built its own before: the
-// final diagram of 3000 sites on the 22k-vertex sword computed its 3000 columns again, 7 s).
+// spectrum's columns of the sites that do not move (two solves per site otherwise computed
+// again by each stage).
 // A metric is the same object whichever stage builds it, so sharing it changes no result.
 class Input_metric
 {
@@ -978,12 +974,12 @@ int run_main(int argc, char** argv)
           work = &refined;
           work_sites = r.sites;
           carry_breaklines(refined, refined_input_face);
-          mesh = Mesh();   // not read again: at igea-2M its 350 MB go to the diagram
+          mesh = Mesh();   // not read again: its memory goes to the diagram
           std::cerr << "surface_voronoi: note: the mesh was refined for the sites (" << r.edges_split
                     << " edges split, " << num_vertices(refined) << " vertices; --no-refine to keep it)" << std::endl;
         }
         else
-          refined = Mesh();   // an unchanged copy, not read again: at igea-537k its 70 MB go to the diagram
+          refined = Mesh();   // an unchanged copy, not read again: its memory goes to the diagram
         insertion = std::chrono::duration<double>(Clock::now() - ti).count();
       }
       if(args.insert_sites)

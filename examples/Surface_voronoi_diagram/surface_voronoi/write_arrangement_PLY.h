@@ -72,9 +72,8 @@ void append_bytes(std::string& buffer, const T& value)
 } // namespace internal
 
 /// Writes the arrangement as binary PLY straight from the diagram's cells: the same bytes as
-/// `CGAL::IO::write_PLY()` on `arrangement_for_PLY()`'s mesh (tested), without that mesh. At
-/// igea-537k with 10k sites the mesh was 119 MB, built and freed only to be written, and most
-/// of the output stage's time. The vertices come in the order `make_arrangement()` adds them
+/// `CGAL::IO::write_PLY()` on `arrangement_for_PLY()`'s mesh (tested), without that mesh,
+/// which would be built and freed only to be written. The vertices come in the order `make_arrangement()` adds them
 /// (first use by a face), the faces in the order of the cells' pieces.
 /// \throws Write_error if a face has more than 255 vertices (PLY's `uchar` count)
 template <class Diagram>

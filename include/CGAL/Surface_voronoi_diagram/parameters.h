@@ -326,7 +326,7 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
 // An internal hook, not API: validate_input() skips the checks of the halfedge structure,
 // of the faces' degrees and of the vertices' fans, which the program's reader has made on
-// the polygon soup the mesh was built from (a tenth of a second at 537k vertices).
+// the polygon soup the mesh was built from.
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)

@@ -50,7 +50,7 @@ struct Candidate
   std::array<double, 3> value;
 };
 
-/// The candidates of one face: most faces have one or two (1.7 on average with 10k sites),
+/// The candidates of one face: most faces have one or two,
 /// kept inline, so that a million faces are not a million heap blocks to allocate and free.
 typedef Small_vector<Candidate, 2> Candidate_list;
 /// One list per face. The elements that `resize()` and the size constructor add are left

@@ -71,8 +71,8 @@ public:
     m_first[nf] = static_cast<std::uint32_t>(total);
     m_items.resize(total);   // unconstructed: the copy constructs them, and touches their pages
     // The lists on the heap are freed afterwards, on one thread: freed by the threads of the
-    // copy, most of them allocated by another thread, they queued on the allocator's locks
-    // (the copy took as long on two threads as on one).
+    // copy, most of them allocated by another thread, they would queue on the allocator's
+    // locks.
     for_each_chunk(nf, chunk, parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
       std::size_t first = chunk_first[c];
       for(std::size_t f = begin; f < end; ++f)

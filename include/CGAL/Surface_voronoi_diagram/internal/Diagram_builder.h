@@ -83,8 +83,8 @@ public:
     typedef Propagation<TriangleMesh, Fields, decltype(is_blocked)> Field_propagation;
     Field_propagation propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked, m_settings.parallel);
     // A lazy metric's value (a fast-marching front advanced) costs far more than a field's
-    // crossing into another block, and a block's fronts stay in cache: blocks of a quarter the
-    // size (the geodesic metric, igea with 10k sites: propagation 1.21 -> 1.02 s on one thread)
+    // crossing into another block, and smaller blocks keep their fronts in cache: blocks of a
+    // quarter the size
     if(!std::is_same<Fields, Embedding_values>::value)
       propagation.set_block_sizes(Field_propagation::faces_per_block / 4, Field_propagation::sites_per_block);
     if(global_nearest)
@@ -210,8 +210,7 @@ public:
     }
     if(restitched) summarize_candidates();   // the candidates a repair changed
     m_timer.stop("repair");
-    // the cells' areas: part of building the cells, whatever the repair did (timed as repair,
-    // they and the vertices' owners were half its time at 537k vertices with nothing broken)
+    // the cells' areas: part of building the cells, whatever the repair did (timed as repair)
     summarize(regions_of_site);
     m_timer.stop("cutting");
     return progress(1.);

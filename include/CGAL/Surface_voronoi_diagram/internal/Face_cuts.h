@@ -11,12 +11,11 @@
 //
 // The cuts of all the faces of a diagram, in flat arrays (a record per face, then the pieces,
 // their vertices and their edges' supports) instead of a vector of pieces per face, each with
-// its own inline buffers: on a million-face mesh that was 150 MB, the largest allocation of a
-// diagram, for what fits in about half. The pieces, vertices and supports are stored chunk by
+// its own inline buffers, the largest allocation of a diagram, for what fits in about half. The pieces, vertices and supports are stored chunk by
 // chunk of faces, each chunk in arrays of exactly its size, filled from a scratch buffer that
 // the next chunk reuses: concurrent chunks then touch no more fresh memory than one sequential
-// pass, and nothing is concatenated (on a virtual machine, first touches of memory cost more
-// than the cutting). The stages read a face's cut through a light view (`operator[]`) with the
+// pass, and nothing is concatenated (first touches of fresh memory can cost more than the
+// cutting). The stages read a face's cut through a light view (`operator[]`) with the
 // members of `Face_cut`.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_FACE_CUTS_H

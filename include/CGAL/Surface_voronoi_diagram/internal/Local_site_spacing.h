@@ -14,8 +14,8 @@
 // site if larger, kept within [1/16, 1] times the mean spacing (two sites at one point must not ask for edges of length zero, and evenly
 // spaced sites get the mean rule). A neighbour is a site whose face does not face away from
 // the site's own (positive dot product of the normals): across a thin wall the straight line
-// is short while the surface between the two sides is long, and counting such pairs refined
-// the whole of a propeller's blades (573k vertices for 3,160 sites).
+// is short while the surface between the two sides is long, and counting such pairs would
+// refine thin parts whole.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H

@@ -58,8 +58,8 @@ struct Partition
     std::uint32_t element;   // mesh vertex, mesh edge or face (32-bit, as Indexed_mesh)
     Location_kind kind;
   };
-  /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (a heap block per
-  /// piece was a million allocations and frees on a 537k-vertex mesh), in 32 bits.
+  /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (not a heap block per
+  /// piece), in 32 bits.
   typedef Small_vector<std::uint32_t, 4> Vertex_cycle;
 
   struct Piece   // 40 bytes: a million-face mesh's diagram has more pieces than faces
@@ -73,7 +73,7 @@ struct Partition
   std::vector<Vertex> vertices;
   std::vector<Piece> pieces;                // grouped by face, in face order, sites ascending
   // pieces of face f: [face_begin[f], face_begin[f+1]); 32-bit like the partition's ids (the
-  // stitcher checks the count), 4 MB less at a million faces
+  // stitcher checks the count)
   std::vector<std::uint32_t> face_begin;
   std::size_t welded_vertices = 0;
   std::size_t inserted_vertices = 0;

@@ -496,7 +496,7 @@ private:
   }
 
   // `candidates` becomes an empty list per face, constructed in concurrent chunks with a
-  // parallel tag: their threads first touch the array's pages (72 MB at a million faces)
+  // parallel tag: their threads first touch the array's pages
   void make_empty_lists() { construct_in_chunks(candidates, m_mesh.number_of_faces(), m_parallel); }
 
   void link_faces()

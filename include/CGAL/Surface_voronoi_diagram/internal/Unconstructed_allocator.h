@@ -12,8 +12,8 @@
 // An allocator for large arrays filled in concurrent chunks: `resize()` leaves the new
 // elements unconstructed, and the code that fills them constructs each in place (with
 // `std::uninitialized_copy` or placement new). A value-initializing `resize()` wrote every
-// page on one thread first: first touches of fresh pages are a large share of a pass over
-// them on this kind of virtual machine, and they then run on every thread.
+// page on one thread first: first touches of fresh pages can be a large share of a pass over
+// them, and they then run on every thread.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_UNCONSTRUCTED_ALLOCATOR_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_UNCONSTRUCTED_ALLOCATOR_H

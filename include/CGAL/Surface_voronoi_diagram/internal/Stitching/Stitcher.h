@@ -229,17 +229,15 @@ private:
       out.face_begin[nf] = std::uint32_t(out.pieces.size());
       m_edge_crossings_begin[nf] = std::uint32_t(m_edge_crossings.size());
     };
-    // The naming writes the reserved arrays once, in order, on one thread, and their pages'
-    // first touches were 45% of its time (igea-537k, 10k sites: 0.047 of 0.106 s). With
-    // threads, another one backs those pages ahead of it (in the storage reserved above, as
-    // raw memory: no element is read or written there), then does the caller's work. Only
-    // what the naming will fill, so that no page is backed for nothing: the pieces are
-    // counted; a diagram of n sites has, by Euler's formula, about n bisector crossings fewer
-    // than the pieces beyond one a face, and 2n Voronoi vertices inside faces (igea-537k,
-    // 10k sites: 321,727 crossings for 331,725 extra pieces; boot, the lampshade and igea with
-    // 1k to 100k sites within 0.1% of that), so as many crossings as extra pieces and as many
-    // vertices as the corners and the extra pieces (at most n crossings, 160 KB at 10k sites,
-    // backed for nothing), and the naming backs the last 2n vertices itself.
+    // The naming writes the reserved arrays once, in order, on one thread, and first touches
+    // of their pages take much of its time. With threads, another one backs those pages
+    // ahead of it (in the storage reserved above, as raw memory: no element is read or
+    // written there), then does the caller's work. Only what the naming will fill, so that
+    // no page is backed for nothing: the pieces are counted; a diagram of n sites has, by
+    // Euler's formula, about n bisector crossings fewer than the pieces beyond one a face,
+    // and 2n Voronoi vertices inside faces, so as many crossings as extra pieces and as many
+    // vertices as the corners and the extra pieces (at most n crossings backed for nothing),
+    // and the naming backs the last 2n vertices itself.
     const std::size_t extra_pieces = pieces - (std::min)(pieces, nf);
     const std::size_t vertices_ahead = (std::min)(out.vertices.capacity(), m_mesh.number_of_vertices() + extra_pieces);
     const std::size_t crossings_ahead = (std::min)(m_edge_crossings.capacity(), extra_pieces);
@@ -429,12 +427,12 @@ private:
   {
     Partition& out = *m_out;
     // the points of each edge, sorted by parameter, in one flat array grouped by edge with a
-    // counting sort (a global sort and a binary search per piece edge were 13% of a Lloyd step)
+    // counting sort (a global sort and a binary search per piece edge cost far more)
     struct Edge_point { double t; std::size_t id; };
     const std::size_t ne = m_mesh.number_of_edges();
     CGAL_precondition(out.vertices.size() < std::size_t(std::uint32_t(-1)));
-    // In concurrent chunks (on one thread, 0.024 s at igea-537k with 10k sites, a third of the
-    // step): the counts and the slots are taken by atomic increments, in an order that varies
+    // In concurrent chunks: the counts and the slots are taken by atomic increments, in an
+    // order that varies
     // with the threads, and each edge's points are then sorted by (t, id), an order that does
     // not.
     const std::size_t chunk = 8192;
