@@ -16,8 +16,6 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
-
 #include <CGAL/tags.h>
 #include <CGAL/use.h>
 
@@ -31,7 +29,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <new>
 #include <type_traits>
 #include <vector>
 
@@ -96,17 +93,6 @@ void parallel_for_each_index(std::size_t n, bool parallel, const Function& f)
   for_each_chunk(n, 4096, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
     for(std::size_t i = begin; i < end; ++i) f(i);
   });
-}
-
-/// `v` becomes `n` value-initialized elements, constructed in concurrent chunks with
-/// `parallel`: the threads that will fill such a large array first touch its pages, instead
-/// of the one thread that sized it (its allocator leaves `resize()` unconstructed).
-template <class T>
-void construct_in_chunks(std::vector<T, Unconstructed_allocator<T> >& v, std::size_t n, bool parallel)
-{
-  std::vector<T, Unconstructed_allocator<T> >().swap(v);
-  v.resize(n);
-  parallel_for_each_index(n, parallel, [&v](std::size_t i) { ::new(static_cast<void*>(&v[i])) T(); });
 }
 
 /// Where each chunk's share of a total begins, for chunks that fill one array in order:
