@@ -10,7 +10,6 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Four_ary_heap.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -22,7 +21,6 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <queue>
 #include <functional>
 #include <random>
 #include <set>
@@ -744,99 +742,11 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
   CHECK(rounds_admitting >= 20);
 }
 
-// The compact small vector of the pieces' vertex ids and the faces' candidates, against
-// std::vector: every operation the pipeline uses, across the step from the elements kept inside
-// to a heap block, and back by shrinking.
-TEST_CASE("stitcher: Small_vector behaves as a vector, inline and on the heap", "[stitcher]")
-{
-  static_assert(sizeof(SVI::Partition::Vertex_cycle) == 24, "the point of the class is its size");
-  static_assert(sizeof(SVI::Candidate_list) == 72, "the point of the class is its size");
-  std::mt19937 random(7);
-  for(int trial = 0; trial < 200; ++trial)
-  {
-    SVI::Partition::Vertex_cycle c;
-    std::vector<std::uint32_t> v;
-    const int steps = 1 + int(random() % 40);
-    for(int k = 0; k < steps; ++k)
-    {
-      const unsigned what = random() % 9;
-      if(what <= 2) { const std::uint32_t id = std::uint32_t(random()); c.push_back(id); v.push_back(id); }
-      else if(what == 3 && !v.empty()) { c.pop_back(); v.pop_back(); }
-      else if(what == 4) { const std::size_t n = random() % 12; c.resize(n); v.resize(n, 0); }
-      else if(what == 5)
-      {
-        std::vector<std::uint32_t> ids(random() % 10);
-        for(auto& id : ids) id = std::uint32_t(random());
-        c.assign(ids.begin(), ids.end());
-        v = ids;
-      }
-      else if(what == 6 && !v.empty())
-      {
-        // what the stitcher does with the points it finds on a piece's edge
-        const std::size_t at = random() % (v.size() + 1);
-        std::vector<std::size_t> ids(random() % 6);
-        for(auto& id : ids) id = std::size_t(random() % 1000);
-        c.insert(c.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
-        v.insert(v.begin() + std::ptrdiff_t(at), ids.begin(), ids.end());
-      }
-      else if(what == 7 && !v.empty())
-      {
-        const std::size_t a = random() % v.size(), b = a + random() % (v.size() - a + 1);
-        const auto at = c.erase(c.begin() + std::ptrdiff_t(a), c.begin() + std::ptrdiff_t(b));
-        REQUIRE(at == c.begin() + std::ptrdiff_t(a));
-        v.erase(v.begin() + std::ptrdiff_t(a), v.begin() + std::ptrdiff_t(b));
-      }
-      else c.reserve(random() % 16);
-      REQUIRE(c.size() == v.size());
-      REQUIRE(std::equal(c.begin(), c.end(), v.begin(), v.end()));
-    }
-    const SVI::Partition::Vertex_cycle copy = c;
-    SVI::Partition::Vertex_cycle assigned;
-    assigned.push_back(1);
-    assigned = copy;
-    SVI::Partition::Vertex_cycle moved = std::move(c);
-    CHECK(c.empty());
-    CHECK(copy == moved);
-    CHECK(assigned == moved);
-    SVI::Partition::Vertex_cycle move_assigned;
-    for(int k = 0; k < 9; ++k) move_assigned.push_back(std::uint32_t(k));
-    move_assigned = std::move(moved);
-    CHECK(std::equal(move_assigned.begin(), move_assigned.end(), v.begin(), v.end()));
-    if(!v.empty())
-    {
-      CHECK(move_assigned.front() == v.front());
-      CHECK(move_assigned.back() == v.back());
-      move_assigned[0] ^= 1u;
-      CHECK(move_assigned != copy);
-    }
-  }
-}
-
-TEST_CASE("stitcher: Small_vector of candidates: growth from its own element, sort, shrink", "[stitcher]")
-{
-  SVI::Candidate_list list;
-  for(std::uint32_t s = 0; s < 2; ++s) list.push_back(SVI::Candidate(s, {{ double(s), 0., 1. }}));
-  list.push_back(list[0]);   // the vector grows to the heap while `list[0]` is read
-  list.push_back(list[1]);
-  list.push_back(SVI::Candidate(9, {{ -1., 2., 3. }}, 1));
-  REQUIRE(list.size() == 5);
-  CHECK(list[2].site == 0);
-  CHECK(list[3].site == 1);
-  CHECK(list[3].value[0] == 1.);
-  CHECK(list[4].from_edge == 1);
-  std::sort(list.begin(), list.end(), [](const SVI::Candidate& a, const SVI::Candidate& b) { return a.site > b.site; });
-  CHECK(list[0].site == 9);
-  list.resize(1);
-  CHECK(list.size() == 1);
-  CHECK(SVI::values_of(list, 9)[2] == 3.);
-}
-
-// A partition has about as many vertices, and more pieces, than the mesh has faces: both are
-// 40 bytes, their site index in 32 bits that still reads as the library's `no_site`.
-TEST_CASE("stitcher: partition vertices and pieces are 40 bytes, their site index keeps no_site", "[stitcher]")
+// A partition has about as many vertices, and more pieces, than the mesh has faces: a vertex
+// is 40 bytes, a piece's site index 32 bits that still read as the library's `no_site`.
+TEST_CASE("stitcher: partition vertices are 40 bytes, a piece's site index keeps no_site", "[stitcher]")
 {
   static_assert(sizeof(SVI::Partition::Vertex) == 40, "a vertex: point, parameter, 32-bit element, kind");
-  static_assert(sizeof(SVI::Partition::Piece) == 40, "a piece: face, 32-bit site, vertex cycle, area");
   for(std::size_t site : { std::size_t(0), std::size_t(1), std::size_t(0xfffffffeu), SVI::no_site })
   {
     const SVI::Site_index_32 stored(site);
@@ -892,7 +802,7 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
       REQUIRE(back[f].size() == original[f].size());
       for(std::size_t k = 0; k < back[f].size(); ++k) CHECK(same(back[f][k], original[f][k]));
     }
-    // copies (the table's storage is raw) hold the same candidates, apart from the original
+    // copies hold the same candidates, apart from the original
     SVI::Candidate_table assigned;
     assigned = table;
     const SVI::Candidate_table copied(assigned);
@@ -919,60 +829,6 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
   const SVI::Candidate_table none_copied(none);
   CHECK(none_copied.empty());
   CHECK(none_copied.number_of_candidates() == 0);
-}
-
-TEST_CASE("propagation: the four-ary heap pops what std::priority_queue pops", "[stitcher]")
-{
-  // events as the propagation's: a key with many ties, broken by site then face
-  struct Ev { double key; std::uint32_t site, face; };
-  struct Later
-  {
-    bool operator()(const Ev& a, const Ev& b) const
-    {
-      if(a.key != b.key) return a.key > b.key;
-      if(a.site != b.site) return a.site > b.site;
-      return a.face > b.face;
-    }
-  };
-  std::mt19937 rng(11);
-  SVI::Four_ary_heap<Ev, Later> heap;
-  std::priority_queue<Ev, std::vector<Ev>, Later> reference;
-  std::uint32_t next_face = 0;
-  std::size_t popped = 0;
-  for(int round = 0; round < 20000; ++round)
-  {
-    // bursts of pushes and of pops, so that the heap grows and shrinks through several levels
-    const bool growing = (round / 500) % 2 == 0;
-    const bool push = reference.empty() || (growing ? rng() % 4 != 0 : rng() % 4 == 0);
-    if(push)
-    {
-      const Ev e{ double(rng() % 50), std::uint32_t(rng() % 7), next_face++ };
-      heap.push(e);
-      reference.push(e);
-    }
-    else
-    {
-      REQUIRE(!heap.empty());
-      const Ev a = heap.top(), b = reference.top();
-      CHECK((a.key == b.key && a.site == b.site && a.face == b.face));
-      heap.pop();
-      reference.pop();
-      ++popped;
-    }
-    REQUIRE(heap.size() == reference.size());
-  }
-  while(!reference.empty())
-  {
-    const Ev a = heap.top(), b = reference.top();
-    CHECK((a.key == b.key && a.site == b.site && a.face == b.face));
-    heap.pop();
-    reference.pop();
-    ++popped;
-  }
-  CHECK(heap.empty());
-  CHECK(popped == next_face);
-  heap.release();
-  CHECK(heap.size() == 0);
 }
 
 } // namespace svd_test_stitcher

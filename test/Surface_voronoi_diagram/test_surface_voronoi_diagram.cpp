@@ -7,7 +7,6 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
-#include <CGAL/Surface_voronoi_diagram/internal/populate_pages.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
 #include <fidelity.h>   // benchmark/Surface_voronoi_diagram: the fidelity measurement
@@ -260,29 +259,6 @@ TEST_CASE("diagram: a parallel diagram is the sequential one, bit for bit, on an
       CHECK(e.statistics().welded_vertices == f.statistics().welded_vertices);
     }
   }
-}
-
-// The stitcher's other thread backs the naming's pages ahead of it while the naming writes
-// them: backing must leave what is written there as it is (a call that dropped the pages, as
-// MADV_DONTNEED does, would zero them), over blocks that do not start or end on a page.
-TEST_CASE("populate_pages_in_step: the blocks' contents are left as they are", "[diagram][parallel]")
-{
-  const std::size_t n = (std::size_t(3) << 20) / sizeof(std::uint64_t) + 77;   // about 3 MB, not whole pages
-  std::vector<std::uint64_t> a(n), b(n / 3);
-  for(std::size_t i = 0; i < a.size(); ++i) a[i] = i * 2654435761u + 1;
-  for(std::size_t i = 0; i < b.size(); ++i) b[i] = ~a[i];
-  std::vector<std::uint64_t> c;
-  c.reserve(n);   // storage not yet written, as the naming's
-  SV::internal::populate_pages_in_step({ { a.data() + 3, (a.size() - 5) * sizeof(std::uint64_t) },
-                                         { b.data(), b.size() * sizeof(std::uint64_t) },
-                                         { c.data(), c.capacity() * sizeof(std::uint64_t) },
-                                         { nullptr, 0 } }, 7);
-  bool same = true;
-  for(std::size_t i = 0; i < a.size(); ++i) same = same && a[i] == i * 2654435761u + 1;
-  for(std::size_t i = 0; i < b.size(); ++i) same = same && b[i] == ~a[i];
-  CHECK(same);
-  for(std::size_t i = 0; i < n; ++i) c.push_back(a[i] ^ 5);
-  CHECK(c[n - 1] == (a[n - 1] ^ 5));
 }
 
 // The geodesic metric without its concurrent queries: the diagram propagates in one global order.

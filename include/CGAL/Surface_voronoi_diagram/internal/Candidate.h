@@ -18,8 +18,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Surface_voronoi_diagram/internal/Small_vector.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <array>
@@ -52,12 +51,9 @@ struct Candidate
 
 /// The candidates of one face: most faces have one or two,
 /// kept inline, so that a million faces are not a million heap blocks to allocate and free.
-typedef Small_vector<Candidate, 2> Candidate_list;
-/// One list per face. The elements that `resize()` and the size constructor add are left
-/// unconstructed, so that the propagation constructs a million empty lists in concurrent
-/// chunks, whose threads first touch the pages (`Propagation::make_empty_lists()`): give
-/// such a vector a value to copy everywhere else (`assign(n, Candidate_list())`).
-typedef std::vector<Candidate_list, Unconstructed_allocator<Candidate_list> > Candidate_lists;
+typedef boost::container::small_vector<Candidate, 2> Candidate_list;
+/// One list per face.
+typedef std::vector<Candidate_list> Candidate_lists;
 
 /// (value, site) compared lexicographically: ties go to the lower site index everywhere,
 /// which is the symbolic perturbation that makes both sides of every edge agree.

@@ -10,7 +10,7 @@
 // Author(s) : The Surface_voronoi_diagram authors
 //
 // The faces' candidate lists once they no longer change, in one array. The propagation grows
-// a list per face (`Candidate_lists`, room for two candidates inline: 72 bytes a face); most
+// a list per face (`Candidate_lists`, room for two candidates inline: 88 bytes a face); most
 // faces end with one candidate, so the final lists take about half as much packed one after
 // another (32 bytes a candidate and 4 a face). Stitching and everything after it read them
 // here; a repair after stitching unpacks them again (`to_lists()`).
@@ -21,13 +21,12 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -69,7 +68,7 @@ public:
     CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
     m_first.resize(nf + 1);
     m_first[nf] = static_cast<std::uint32_t>(total);
-    m_items.resize(total);   // unconstructed: the copy constructs them, and touches their pages
+    m_items.resize(total);
     // The lists on the heap are freed afterwards, on one thread: freed by the threads of the
     // copy, most of them allocated by another thread, they would queue on the allocator's
     // locks.
@@ -78,7 +77,7 @@ public:
       for(std::size_t f = begin; f < end; ++f)
       {
         m_first[f] = static_cast<std::uint32_t>(first);
-        std::uninitialized_copy(lists[f].begin(), lists[f].end(), m_items.data() + first);
+        std::copy(lists[f].begin(), lists[f].end(), m_items.data() + first);
         first += lists[f].size();
       }
     });
@@ -112,12 +111,12 @@ public:
   void clear()
   {
     std::vector<std::uint32_t>().swap(m_first);
-    decltype(m_items)().swap(m_items);
+    std::vector<Candidate>().swap(m_items);
   }
 
 private:
   std::vector<std::uint32_t> m_first;   // face f's candidates: m_items[m_first[f]] .. m_items[m_first[f + 1]]
-  std::vector<Candidate, Unconstructed_allocator<Candidate> > m_items;
+  std::vector<Candidate> m_items;
 };
 
 /// The sites of each face's candidates, without their values: the diagram a Lloyd step

@@ -18,9 +18,10 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Small_vector.h>
 
 #include <CGAL/assertions.h>
+
+#include <boost/container/small_vector.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -58,11 +59,11 @@ struct Partition
     std::uint32_t element;   // mesh vertex, mesh edge or face (32-bit, as Indexed_mesh)
     Location_kind kind;
   };
-  /// A piece's vertex ids: 3 or 4 for most pieces, kept inline (not a heap block per
-  /// piece), in 32 bits.
-  typedef Small_vector<std::uint32_t, 4> Vertex_cycle;
+  /// A piece's vertex ids: 3 or 4 for most pieces, kept inline, so that a
+  /// million pieces are not a million heap blocks to allocate and free.
+  typedef boost::container::small_vector<std::uint32_t, 4> Vertex_cycle;
 
-  struct Piece   // 40 bytes: a million-face mesh's diagram has more pieces than faces
+  struct Piece
   {
     std::uint32_t face;
     Site_index_32 site;    // no_site where no site reaches

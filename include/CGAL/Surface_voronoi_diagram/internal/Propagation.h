@@ -31,10 +31,10 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Four_ary_heap.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
+
+#include <boost/heap/d_ary_heap.hpp>
 
 #include <algorithm>
 #include <array>
@@ -180,15 +180,7 @@ public:
       queue.clear();
       start_at(s, m_site_faces[s], queue);
       for(std::size_t f : extra_starts[s]) start_at(s, f, queue);
-      for(std::size_t next = 0; next < queue.size(); ++next)
-      {
-        // a cell's faces lie hundreds of faces apart in the mesh's order, and spreading waits
-        // on memory (the links of a face, then its neighbours' lists): ask for both a face or
-        // two ahead of the queue
-        if(next + 2 < queue.size()) prefetch_link(queue[next + 2]);
-        if(next + 1 < queue.size()) prefetch_neighbour_lists(queue[next + 1]);
-        spread(s, queue[next], queue, nullptr);
-      }
+      for(std::size_t next = 0; next < queue.size(); ++next) spread(s, queue[next], queue, nullptr);
     }
     // The previous candidates no field reached are dropped, and the dominated candidates as
     // after any propagation; what they stopped is offered again around the faces that lost
@@ -347,7 +339,8 @@ private:
   // What one order of events works with: the whole mesh's, or one block's in a round.
   struct Front
   {
-    Four_ary_heap<Event, Later> queue;
+    // four children a node: a pop moves an event half as many levels down as in a binary heap
+    boost::heap::d_ary_heap<Event, boost::heap::arity<4>, boost::heap::compare<Later> > queue;
     std::vector<std::array<double, 3> > values;
     std::vector<std::uint32_t> free_slots;
     Flat_hash_table<Key_slot<std::uint64_t> > offered;   // the offers beyond a face's inline ones
@@ -412,21 +405,6 @@ private:
     return false;
   }
 
-  void prefetch_link(std::size_t f) const { prefetch(&m_links[f]); }
-  void prefetch_neighbour_lists(std::size_t f) const
-  {
-    const Face_link& l = m_links[f];
-    for(int k = 0; k < 3; ++k)
-      if(l.neighbor[k] != no_link) prefetch_list(l.neighbor[k]);
-  }
-  // a list with its inline candidates (72 bytes) spans two cache lines
-  void prefetch_list(std::size_t f) const
-  {
-    const char* list = reinterpret_cast<const char*>(&candidates[f]);
-    prefetch(list);
-    prefetch(list + sizeof(Candidate_list) - 1);
-  }
-
   // run_from(): the field of `site` starts in its face `f`
   void start_at(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue)
   {
@@ -489,15 +467,18 @@ private:
   void forget_offers()
   {
     const std::size_t nf = m_mesh.number_of_faces();
-    construct_in_chunks(m_epoch, nf, m_parallel);
-    construct_in_chunks(m_offers, nf, m_parallel);
+    m_epoch.assign(nf, 0);
+    m_offers.assign(nf, Offers());
     m_front.offered.reset(nf / 8 + 16);
     m_offers_complete = true;
   }
 
-  // `candidates` becomes an empty list per face, constructed in concurrent chunks with a
-  // parallel tag: their threads first touch the array's pages
-  void make_empty_lists() { construct_in_chunks(candidates, m_mesh.number_of_faces(), m_parallel); }
+  // `candidates` becomes an empty list per face
+  void make_empty_lists()
+  {
+    candidates.clear();
+    candidates.resize(m_mesh.number_of_faces());
+  }
 
   void link_faces()
   {
@@ -672,15 +653,6 @@ private:
       const Event e = queue.top();
       queue.pop();
       ++front.statistics.events;
-      // the queue jumps across the mesh, so the next event's face is rarely in cache: ask for
-      // it now, while this event is processed
-      if(!queue.empty())
-      {
-        const Event& next = queue.top();
-        prefetch_list(next.face);
-        prefetch_link(next.face);
-        prefetch(&front.values[next.slot]);
-      }
       const Candidate x(e.site, front.values[e.slot], e.from_edge);
       front.free_slots.push_back(e.slot);
       Candidate_list& list = candidates[e.face];
@@ -701,12 +673,6 @@ private:
       ++front.statistics.admitted;
       const Face_link& l = m_links[e.face];
       for(int k = 0; k < 3; ++k)
-        if(l.neighbor[k] != no_link)
-        {
-          prefetch(&m_offers[l.neighbor[k]]);
-          prefetch_list(l.neighbor[k]);
-        }
-      for(int k = 0; k < 3; ++k)
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
     }
     if(&front == &m_front) statistics.add(front.statistics), front.statistics = Propagation_statistics();
@@ -719,19 +685,9 @@ private:
   static void release_queue(Front& front)
   {
     CGAL_assertion(front.queue.empty());
-    front.queue.release();
+    decltype(front.queue)().swap(front.queue);
     std::vector<std::array<double, 3> >().swap(front.values);
     std::vector<std::uint32_t>().swap(front.free_slots);
-  }
-
-  // a hint to the processor, which changes nothing else
-  static void prefetch(const void* p)
-  {
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    CGAL_USE(p);
-#endif
   }
 
   const Mesh& m_mesh;
@@ -742,8 +698,8 @@ private:
   bool m_parallel;
   std::size_t m_faces_per_block = faces_per_block, m_sites_per_block = sites_per_block;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
-  std::vector<std::uint32_t, Unconstructed_allocator<std::uint32_t> > m_epoch;   // both built in forget_offers()
-  std::vector<Offers, Unconstructed_allocator<Offers> > m_offers;
+  std::vector<std::uint32_t> m_epoch;   // both built in forget_offers()
+  std::vector<Offers> m_offers;
   bool m_offers_complete = true;    // false after a run in blocks: `m_offers` misses their tables
   Front m_front;                    // the global order's (the first propagation's without blocks, the repair's)
   std::vector<std::uint32_t> m_block_of;   // during a run in blocks

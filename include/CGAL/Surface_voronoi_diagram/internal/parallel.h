@@ -16,8 +16,6 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
-
 #include <CGAL/tags.h>
 #include <CGAL/use.h>
 
@@ -31,7 +29,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <new>
 #include <type_traits>
 #include <vector>
 
@@ -68,24 +65,42 @@ bool use_threads()
 /// Number of chunks `for_each_chunk(n, size, ...)` makes.
 inline std::size_t number_of_chunks(std::size_t n, std::size_t size) { return (n + size - 1) / size; }
 
-/// Calls `f(begin, end, chunk)` for the chunks [chunk * size, (chunk + 1) * size) of [0, n):
-/// in order when `parallel` is false or TBB is absent, concurrently otherwise.
-template <class Function>
-void for_each_chunk(std::size_t n, std::size_t size, bool parallel, const Function& f)
+// The one place TBB's loop is instantiated: `call(context, first, last)` for the chunks
+// [first, last) of [0, chunks), in one call when `parallel` is false or TBB is absent,
+// concurrently otherwise. The templates below pass their function through `context`, so that
+// each of them compiles a small function instead of another copy of TBB's loop.
+typedef void (*Chunk_range_call)(const void* context, std::size_t first, std::size_t last);
+
+inline void run_chunk_ranges(std::size_t chunks, bool parallel, Chunk_range_call call, const void* context)
 {
-  const std::size_t chunks = number_of_chunks(n, size);
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel && chunks > 1)
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t c = r.begin(); c != r.end(); ++c) f(c * size, (std::min)(n, (c + 1) * size), c);
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
+                      [call, context](const tbb::blocked_range<std::size_t>& r) { call(context, r.begin(), r.end()); });
     return;
   }
 #else
   CGAL_USE(parallel);
 #endif
-  for(std::size_t c = 0; c < chunks; ++c) f(c * size, (std::min)(n, (c + 1) * size), c);
+  call(context, 0, chunks);
+}
+
+/// Calls `f(begin, end, chunk)` for the chunks [chunk * size, (chunk + 1) * size) of [0, n):
+/// in order when `parallel` is false or TBB is absent, concurrently otherwise.
+template <class Function>
+void for_each_chunk(std::size_t n, std::size_t size, bool parallel, const Function& f)
+{
+  struct Context
+  {
+    std::size_t n, size;
+    const Function* f;
+  };
+  const Context context{ n, size, &f };
+  run_chunk_ranges(number_of_chunks(n, size), parallel, [](const void* p, std::size_t first, std::size_t last) {
+    const Context& c = *static_cast<const Context*>(p);
+    for(std::size_t chunk = first; chunk != last; ++chunk) (*c.f)(chunk * c.size, (std::min)(c.n, (chunk + 1) * c.size), chunk);
+  }, &context);
 }
 
 /// Calls `f(i)` for every i in [0, n), concurrently when `parallel`; `f` must not write
@@ -96,17 +111,6 @@ void parallel_for_each_index(std::size_t n, bool parallel, const Function& f)
   for_each_chunk(n, 4096, parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
     for(std::size_t i = begin; i < end; ++i) f(i);
   });
-}
-
-/// `v` becomes `n` value-initialized elements, constructed in concurrent chunks with
-/// `parallel`: the threads that will fill such a large array first touch its pages, instead
-/// of the one thread that sized it (its allocator leaves `resize()` unconstructed).
-template <class T>
-void construct_in_chunks(std::vector<T, Unconstructed_allocator<T> >& v, std::size_t n, bool parallel)
-{
-  std::vector<T, Unconstructed_allocator<T> >().swap(v);
-  v.resize(n);
-  parallel_for_each_index(n, parallel, [&v](std::size_t i) { ::new(static_cast<void*>(&v[i])) T(); });
 }
 
 /// Where each chunk's share of a total begins, for chunks that fill one array in order:
@@ -136,25 +140,35 @@ std::vector<T> gather_in_chunk_order(std::size_t n, std::size_t size, bool paral
   return out;
 }
 
-/// Runs `main` and `beside`, with `parallel` possibly at the same time (`beside` as a task
-/// another thread may take while `main` runs); they must not write to the same data.
-template <class Main, class Beside>
-void run_beside(bool parallel, const Main& main, const Beside& beside)
+// The one place TBB's task group is instantiated: `main(main_context)` and
+// `beside(beside_context)`, with `parallel` possibly at the same time.
+typedef void (*Task_call)(const void* context);
+
+inline void run_two_tasks(bool parallel, Task_call main, const void* main_context, Task_call beside, const void* beside_context)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel)
   {
     tbb::task_group group;
-    group.run([&]() { beside(); });
-    main();
+    group.run([beside, beside_context]() { beside(beside_context); });
+    main(main_context);
     group.wait();
     return;
   }
 #else
   CGAL_USE(parallel);
 #endif
-  main();
-  beside();
+  main(main_context);
+  beside(beside_context);
+}
+
+/// Runs `main` and `beside`, with `parallel` possibly at the same time (`beside` as a task
+/// another thread may take while `main` runs); they must not write to the same data.
+template <class Main, class Beside>
+void run_beside(bool parallel, const Main& main, const Beside& beside)
+{
+  run_two_tasks(parallel, [](const void* f) { (*static_cast<const Main*>(f))(); }, &main,
+                [](const void* f) { (*static_cast<const Beside*>(f))(); }, &beside);
 }
 
 } // namespace internal

@@ -31,9 +31,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/exact_predicates.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/populate_pages.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Vertex_key.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Unconstructed_allocator.h>
 
 #include <algorithm>
 #include <array>
@@ -229,26 +227,10 @@ private:
       out.face_begin[nf] = std::uint32_t(out.pieces.size());
       m_edge_crossings_begin[nf] = std::uint32_t(m_edge_crossings.size());
     };
-    // The naming writes the reserved arrays once, in order, on one thread, and first touches
-    // of their pages take much of its time. With threads, another one backs those pages
-    // ahead of it (in the storage reserved above, as raw memory: no element is read or
-    // written there), then does the caller's work. Only what the naming will fill, so that
-    // no page is backed for nothing: the pieces are counted; a diagram of n sites has, by
-    // Euler's formula, about n bisector crossings fewer than the pieces beyond one a face,
-    // and 2n Voronoi vertices inside faces, so as many crossings as extra pieces and as many
-    // vertices as the corners and the extra pieces (at most n crossings backed for nothing),
-    // and the naming backs the last 2n vertices itself.
-    const std::size_t extra_pieces = pieces - (std::min)(pieces, nf);
-    const std::size_t vertices_ahead = (std::min)(out.vertices.capacity(), m_mesh.number_of_vertices() + extra_pieces);
-    const std::size_t crossings_ahead = (std::min)(m_edge_crossings.capacity(), extra_pieces);
-    run_beside(m_parallel, name_faces, [&]() {
-      if(m_parallel)
-        populate_pages_in_step({ { out.pieces.data(), pieces * sizeof(Partition::Piece) },
-                                 { out.vertices.data(), vertices_ahead * sizeof(Partition::Vertex) },
-                                 { m_edge_crossings.data(), crossings_ahead * sizeof(Edge_crossing_entry) },
-                                 { m_origins.data(), (m_keep_keys ? vertices_ahead : 0) * sizeof(Origin) } });
-      if(beside) beside();
-    });
+    if(beside)
+      run_beside(m_parallel, name_faces, beside);
+    else
+      name_faces();
   }
 
   const double* values_of(std::size_t f, std::uint32_t site) const { return internal::values_of(m_candidates[f], site); }
@@ -459,14 +441,13 @@ private:
         first += n;
       }
     });
-    std::vector<Edge_point, Unconstructed_allocator<Edge_point> > edge_points;
-    edge_points.resize(edge_begin[ne]);   // unconstructed: each slot is written once below
+    std::vector<Edge_point> edge_points(edge_begin[ne]);
     for_each_chunk(out.vertices.size(), chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t) {
       for(std::size_t id = begin; id < end; ++id)
         if(on_edge(id))
         {
           const std::uint32_t k = slot[out.vertices[id].element].fetch_add(1, std::memory_order_relaxed);
-          ::new(static_cast<void*>(&edge_points[k])) Edge_point{ out.vertices[id].t, id };
+          edge_points[k] = Edge_point{ out.vertices[id].t, id };
         }
     });
     std::vector<std::atomic<std::uint32_t> >().swap(slot);
