@@ -215,57 +215,6 @@ TEST_CASE("deprecated: Diagram_options repair and max_site_distance are the name
   require_same_diagram(old_far, new_far);
 }
 
-TEST_CASE("deprecated: Biharmonic_options is embedding_dimension, eigen_tolerance, max_eigen_solver_restarts", "[deprecated]")
-{
-  Mesh m;
-  GEN::make_torus(m, 1.0, 0.35, 30, 12);
-  SV::Biharmonic_options o;
-  o.dimension = 12;
-  o.tolerance = 1e-9;
-  o.max_iterations = 500;
-  const Biharmonic old_form(m, o);
-  const Biharmonic new_form(m, SVp::embedding_dimension(12, SVp::eigen_tolerance(1e-9, SVp::max_eigen_solver_restarts(500))));
-  REQUIRE(old_form.dimension() == 12);
-  REQUIRE(new_form.dimension() == 12);
-  CHECK(old_form.computed_eigenvalues() == new_form.computed_eigenvalues());
-  CHECK(old_form.computed_eigenvectors() == new_form.computed_eigenvectors());
-  std::size_t same = 0;
-  std::vector<double> a(12), b(12);
-  for(auto v : vertices(m))
-  {
-    old_form.coordinates(v, a.begin());
-    new_form.coordinates(v, b.begin());
-    same += (a == b);
-  }
-  CHECK(same == num_vertices(m));
-
-  // the default options are the defaults, and the old constructor still takes named parameters
-  const Biharmonic old_default(m, SV::Biharmonic_options(), CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, m)));
-  const Biharmonic new_default(m);
-  REQUIRE(new_default.dimension() == 10);
-  CHECK(old_default.dimension() == 10);
-  CHECK(old_default.computed_eigenvalues() == new_default.computed_eigenvalues());
-  CHECK(old_default.computed_eigenvectors() == new_default.computed_eigenvectors());
-}
-
-TEST_CASE("deprecated: Biharmonic_embedding::embedding(location, tm) is embedding(location)", "[deprecated]")
-{
-  Mesh m;
-  GEN::make_icosphere(m, 2, 1.0);
-  const Biharmonic e(m);
-  std::size_t same = 0, nonzero = 0;
-  const auto locations = area_uniform_locations(m, 50, 3);
-  for(const auto& l : locations)
-  {
-    const std::vector<double> old_form = e.embedding(l, m);
-    const std::vector<double> new_form = e.embedding(l);
-    same += (old_form == new_form);
-    nonzero += (new_form.size() == e.dimension() && new_form != std::vector<double>(e.dimension(), 0.));
-  }
-  CHECK(same == locations.size());
-  CHECK(nonzero == locations.size());
-}
-
 TEST_CASE("deprecated: refine_for_sites(tm, sites, Refinement_options) is the named-parameter form", "[deprecated]")
 {
   Mesh m;

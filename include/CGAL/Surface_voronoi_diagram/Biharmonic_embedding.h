@@ -28,7 +28,6 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
-#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
@@ -52,24 +51,6 @@
 #include <vector>
 
 namespace CGAL {
-
-namespace Surface_voronoi {
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`
-/// (for `dimension`), `Surface_voronoi::parameters::eigen_tolerance` (for `tolerance`) and
-/// `Surface_voronoi::parameters::max_eigen_solver_restarts` (for `max_iterations`) of
-/// `CGAL::Biharmonic_embedding`.
-struct CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
-Biharmonic_options
-{
-  /// the dimension `d`
-  std::size_t dimension = 10;
-  /// the relative tolerance of the eigen-solver
-  double tolerance = 1e-10;
-  /// the most restarts of the eigen-solver
-  std::size_t max_iterations = 1000;
-};
-} // namespace Surface_voronoi
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 ///
@@ -224,22 +205,6 @@ public:
     compute(tm, vpm, given, dimension, tolerance, restarts, callback, times);
   }
 
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-  /// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`,
-  /// `Surface_voronoi::parameters::eigen_tolerance` and
-  /// `Surface_voronoi::parameters::max_eigen_solver_restarts` instead of
-  /// `Surface_voronoi::Biharmonic_options`.
-  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
-  CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
-  Biharmonic_embedding(const TriangleMesh& tm, const Surface_voronoi::Biharmonic_options& options,
-                       const NamedParameters& np = CGAL::parameters::default_values())
-    : Biharmonic_embedding(tm, Surface_voronoi::parameters::embedding_dimension(options.dimension,
-                               Surface_voronoi::parameters::eigen_tolerance(options.tolerance,
-                               Surface_voronoi::parameters::max_eigen_solver_restarts(options.max_iterations, np))))
-  {}
-
-CGAL_SURFACE_VORONOI_DEPRECATED_END
-
   /// the largest dimension `tm` allows: its number of vertices minus its number of connected
   /// components (one zero eigenvalue each) minus one
   static std::size_t maximum_dimension(const TriangleMesh& tm)
@@ -295,10 +260,6 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
     }
     return e;
   }
-
-  /// \deprecated the mesh is the one the embedding was computed on: use `embedding(location)`
-  CGAL_DEPRECATED_MSG("use embedding(location)")
-  std::vector<double> embedding(const Face_location& location, const TriangleMesh&) const { return embedding(location); }
 
   /// squared biharmonic (embedding) distance between two vertices
   double squared_distance(vertex_descriptor u, vertex_descriptor v) const
