@@ -317,6 +317,34 @@ TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered 
   CHECK(worst <= 1e-6 * largest);
 }
 
+// The library leaves Eigen's process-wide settings alone: its cache sizes, read from the
+// progress callback while the eigen-solver runs, are those the program set.
+TEST_CASE("embedding: Eigen's cache sizes stay as they are while an embedding runs", "[embedding][callback]")
+{
+  const std::ptrdiff_t before[3] = { Eigen::l1CacheSize(), Eigen::l2CacheSize(), Eigen::l3CacheSize() };
+  // unusual values, which no library default would give
+  const std::ptrdiff_t unusual[3] = { 12345 * 8, 234567 * 8, 3456789 * 8 };
+  Eigen::setCpuCacheSizes(unusual[0], unusual[1], unusual[2]);
+  Mesh m;
+  make_bent_torus(m, 60, 24);
+  std::size_t calls = 0, changed = 0;
+  const auto callback = [&](double) {
+    ++calls;
+    if(Eigen::l1CacheSize() != unusual[0] || Eigen::l2CacheSize() != unusual[1] || Eigen::l3CacheSize() != unusual[2])
+      ++changed;
+    return true;
+  };
+  const CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(10).callback(callback));
+  const std::ptrdiff_t after[3] = { Eigen::l1CacheSize(), Eigen::l2CacheSize(), Eigen::l3CacheSize() };
+  Eigen::setCpuCacheSizes(before[0], before[1], before[2]);
+  REQUIRE(!e.is_cancelled());
+  CHECK(calls > 3);   // called during the solve, not only before and after it
+  CHECK(changed == 0);
+  CHECK(after[0] == unusual[0]);
+  CHECK(after[1] == unusual[1]);
+  CHECK(after[2] == unusual[2]);
+}
+
 // The rule behind --dimension auto: at least 10, enough for the sites, and no more.
 TEST_CASE("biharmonic dimension: the dimension for n sites resolves them, and one less would not", "[biharmonic]")
 {
