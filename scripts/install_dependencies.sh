@@ -2,7 +2,8 @@
 # Installs, from Debian 12's packages, what the package needs and what is missing.
 # Required: the five of the design card, and python3 for the regression matrix. Optional
 # (detected at configure time): CGAL's data set, TBB, METIS, ccache, doxygen, and
-# CHOLMOD + OpenBLAS for the benchmark's third factorization.
+# CHOLMOD + OpenBLAS (the program's embedding factorization, the biharmonic_cholmod example
+# and its test, the benchmark's third factorization).
 set -e
 required="cmake g++ make python3 libcgal-dev libeigen3-dev libspectra-dev libboost-graph-dev catch2"
 optional="ccache libcgal-demo libtbb-dev libmetis-dev libsuitesparse-dev libopenblas0-pthread doxygen"

@@ -4,7 +4,6 @@
 #include <CGAL/Biharmonic_embedding.h>
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -318,93 +317,33 @@ TEST_CASE("embedding: the default factorization agrees with a plain AMD-ordered 
   CHECK(worst <= 1e-6 * largest);
 }
 
-#ifdef CGAL_USE_METIS
-TEST_CASE("embedding: the nested-dissection ordering is a permutation with less fill than AMD", "[embedding][numerics]")
+// The library leaves Eigen's process-wide settings alone: its cache sizes, read from the
+// progress callback while the eigen-solver runs, are those the program set.
+TEST_CASE("embedding: Eigen's cache sizes stay as they are while an embedding runs", "[embedding][callback]")
 {
+  const std::ptrdiff_t before[3] = { Eigen::l1CacheSize(), Eigen::l2CacheSize(), Eigen::l3CacheSize() };
+  // unusual values, which no library default would give
+  const std::ptrdiff_t unusual[3] = { 12345 * 8, 234567 * 8, 3456789 * 8 };
+  Eigen::setCpuCacheSizes(unusual[0], unusual[1], unusual[2]);
   Mesh m;
-  GEN::make_torus(m, 1.0, 0.35, 160, 64);
-  Eigen::SparseMatrix<double> L, M;
-  matrices(m, L, M);
-  const Eigen::SparseMatrix<double> C = L + 1e-3 * M;
-  typedef SV::internal::Nested_dissection_ordering<int> Ordering;
-  Ordering::PermutationType perm;
-  REQUIRE(Ordering::metis(C, perm));
-  REQUIRE(perm.size() == C.rows());
-  std::vector<int> seen(static_cast<std::size_t>(C.rows()), 0);
-  for(Eigen::Index k = 0; k < perm.size(); ++k)
-  {
-    const int i = perm.indices()[k];
-    REQUIRE(i >= 0);
-    REQUIRE(i < C.rows());
-    ++seen[static_cast<std::size_t>(i)];
-  }
-  CHECK(std::count(seen.begin(), seen.end(), 1) == C.rows());
-  // factorized in that ordering: the permutation applied by hand, then no ordering
-  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> p = perm.inverse();
-  Eigen::SparseMatrix<double> permuted;
-  permuted = C.selfadjointView<Eigen::Lower>().twistedBy(p);
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> > nd(permuted);
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > amd(C);
-  REQUIRE(nd.info() == Eigen::Success);
-  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(C.rows(), -1, 1);
-  const Eigen::VectorXd y = p.inverse() * nd.solve(p * x);
-  CHECK((C * y - x).norm() <= 1e-10 * x.norm());
-  CHECK(nd.matrixL().nestedExpression().nonZeros() < amd.matrixL().nestedExpression().nonZeros());
-  // the same ordering every time (METIS's random numbers have a fixed seed)
-  Ordering::PermutationType again;
-  REQUIRE(Ordering::metis(C, again));
-  CHECK(again.indices() == perm.indices());
-  // below the size where it pays, the functor orders by AMD
-  Ordering::PermutationType small, reference;
-  Ordering()(C, small);
-  Eigen::AMDOrdering<int>()(C, reference);
-  CHECK(small.indices() == reference.indices());
+  make_bent_torus(m, 60, 24);
+  std::size_t calls = 0, changed = 0;
+  const auto callback = [&](double) {
+    ++calls;
+    if(Eigen::l1CacheSize() != unusual[0] || Eigen::l2CacheSize() != unusual[1] || Eigen::l3CacheSize() != unusual[2])
+      ++changed;
+    return true;
+  };
+  const CGAL::Biharmonic_embedding<Mesh> e(m, SV::parameters::embedding_dimension(10).callback(callback));
+  const std::ptrdiff_t after[3] = { Eigen::l1CacheSize(), Eigen::l2CacheSize(), Eigen::l3CacheSize() };
+  Eigen::setCpuCacheSizes(before[0], before[1], before[2]);
+  REQUIRE(!e.is_cancelled());
+  CHECK(calls > 3);   // called during the solve, not only before and after it
+  CHECK(changed == 0);
+  CHECK(after[0] == unusual[0]);
+  CHECK(after[1] == unusual[1]);
+  CHECK(after[2] == unusual[2]);
 }
-#endif
-
-#ifdef CGAL_USE_METIS
-TEST_CASE("embedding: above the nested-dissection size the supernodal eigen-solve agrees with the simplicial one", "[embedding][numerics]")
-{
-  // From Nested_dissection_ordering::smallest_size rows up the default path renumbers the
-  // problem and factorizes it with the supernodal Cholesky; the reference solves the same
-  // matrices with Eigen's simplicial LLT in AMD order. A bent torus: simple eigenvalues.
-  Mesh m;
-  make_bent_torus(m, 400, 256);
-  Eigen::SparseMatrix<double> L, M;
-  matrices(m, L, M);
-  REQUIRE(L.rows() >= SV::internal::Nested_dissection_ordering<int>::smallest_size);
-  const Eigen::Index nev = 8;
-  const SV::internal::Eigen_solve_result fast = SV::internal::smallest_generalized_eigenpairs(L, M, nev);
-  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > > Reference_LA;
-  const SV::internal::Eigen_solve_result reference = SV::internal::smallest_generalized_eigenpairs_in_order<Reference_LA>(L, M, nev, 1e-10, 1000, std::function<bool()>());
-  REQUIRE(fast.eigenvalues.size() == nev);
-  REQUIRE(reference.eigenvalues.size() == nev);
-  for(Eigen::Index k = 1; k < nev; ++k)
-  {
-    CHECK(fast.eigenvalues[k] == Approx(reference.eigenvalues[k]).epsilon(1e-9));
-    if(k + 1 < nev)
-      REQUIRE(reference.eigenvalues[k + 1] > reference.eigenvalues[k] * (1 + 1e-3));
-    // the same eigenvector up to its sign, in the original numbering
-    const double overlap = std::abs(fast.eigenvectors.col(k).dot(M * reference.eigenvectors.col(k)));
-    CHECK(overlap == Approx(1.0).epsilon(1e-8));
-  }
-  CHECK(fast.concurrent_subtrees == 0);
-#ifdef CGAL_LINKED_WITH_TBB
-  // The class with threads (its ConcurrencyTag; dimension 7 and one zero mode ask for the same
-  // 8 eigenpairs): its factorization runs subtrees on concurrent threads wherever TBB allows
-  // two, and its eigenvalues are the sequential solve's bits (the solves' vectors are compared
-  // bit for bit in test_supernodal_cholesky.cpp).
-  SV::internal::Stage_times times;
-  const CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_tag> threaded(
-      m, SV::parameters::embedding_dimension(7, SV::parameters::stage_times(&times)));
-  CHECK(threaded.computed_eigenvalues() == fast.eigenvalues);
-  if(SV::internal::use_threads<CGAL::Parallel_tag>())
-    CHECK(times.counts["concurrent_subtrees"] >= 2);
-  else
-    CHECK(times.counts["concurrent_subtrees"] == 0);
-#endif
-}
-#endif
 
 // The rule behind --dimension auto: at least 10, enough for the sites, and no more.
 TEST_CASE("biharmonic dimension: the dimension for n sites resolves them, and one less would not", "[biharmonic]")
@@ -557,39 +496,6 @@ TEST_CASE("embedding: a mesh of 150 components gets its embedding, the zero mode
     for(std::size_t k = 0; k < d; ++k)
       CHECK(c[k] == Approx(all(Eigen::Index(e.vertex_index(v)), Eigen::Index(150 + k)) / e.eigenvalues()[Eigen::Index(k)]).epsilon(1e-12));
   }
-  // the Krylov-Schur iteration that factorizes large meshes (supernodal), on the same problem
-  SV::internal::Known_null_space null_space;
-  null_space.component = component;
-  null_space.number_of_components = 150;
-  const SV::internal::Eigen_solve_result r = SV::internal::smallest_generalized_eigenpairs_in_order<SV::internal::Supernodal_cholesky_traits>(
-      L, M, 10, 1e-10, 1000, std::function<bool()>(), false, null_space);
-  check_deflated_eigenpairs(L, M, component, 150, r.eigenvalues, r.eigenvectors, expected);
 }
-
-#ifdef CGAL_USE_METIS
-// Above Nested_dissection_ordering::smallest_size the problem is renumbered before the
-// supernodal solve: the components must be renumbered with it.
-TEST_CASE("embedding: a mesh of 160 components above the nested-dissection size", "[embedding][components][numerics]")
-{
-  Mesh m;
-  make_many_shells(m, 160, 3);   // 642 vertices each: 102,720
-  Eigen::SparseMatrix<double> L, M;
-  matrices(m, L, M);
-  REQUIRE(L.rows() >= SV::internal::Nested_dissection_ordering<int>::smallest_size);
-  CGAL::Biharmonic_embedding<Mesh> e(m);
-  REQUIRE(e.number_of_zero_modes() == 160);
-  // the reference: Eigen's simplicial LLT in AMD order, no renumbering (a dense solve of 160
-  // components this size takes minutes); the same problem, another factorization and solver
-  SV::internal::Known_null_space null_space;
-  null_space.component = vertex_components(m);
-  null_space.number_of_components = 160;
-  typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > > Reference_LA;
-  const SV::internal::Eigen_solve_result reference = SV::internal::smallest_generalized_eigenpairs_in_order<Reference_LA>(
-      L, M, 10, 1e-10, 1000, std::function<bool()>(), false, null_space);
-  const std::vector<double> expected(reference.eigenvalues.data(), reference.eigenvalues.data() + 10);
-  check_deflated_eigenpairs(L, M, null_space.component, 160, e.eigenvalues(), e.computed_eigenvectors().rightCols(10), expected);
-  check_deflated_eigenpairs(L, M, null_space.component, 160, reference.eigenvalues, reference.eigenvectors, expected);
-}
-#endif
 
 } // namespace svd_test_biharmonic_embedding

@@ -38,6 +38,13 @@
 
 #include <CGAL/IO/OFF.h>
 
+#ifdef SVD_PROGRAM_USES_CHOLMOD
+#include <CGAL/Eigen_solver_traits.h>
+#include <Eigen/CholmodSupport>
+// OpenBLAS's, when CHOLMOD's BLAS is OpenBLAS; weak: null with another BLAS
+extern "C" void openblas_set_num_threads(int) __attribute__((weak));
+#endif
+
 #include "large_blocks.h"
 #include "output_file.h"
 #include "read_checked_mesh.h"
@@ -250,8 +257,14 @@ typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_avail
 // The input mesh indexed once (after reading) for the validation, the metric, Lloyd and the
 // diagram; each would build its own copy otherwise.
 typedef std::shared_ptr<const SV::internal::Indexed_mesh<Mesh> > Shared_indexed_mesh;
-// the factorization and solves of the eigen-solver on every core (the same bits)
-typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Embedding_metric;
+// The embedding's linear algebra: CHOLMOD's supernodal Cholesky when CMake found SuiteSparse
+// (faster on large meshes), else the library's default.
+#ifdef SVD_PROGRAM_USES_CHOLMOD
+typedef CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > > Embedding_LA;
+#else
+typedef CGAL::Default Embedding_LA;
+#endif
+typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, Embedding_LA, CGAL::Parallel_if_available_tag> Embedding_metric;
 
 // The metric --metric names on the input mesh (the biharmonic one of the dimension given to
 // build()), built once and shared by the stages that work on that mesh: Lloyd, --valid-dual
@@ -1058,6 +1071,13 @@ int main(int argc, char** argv)
   // end the process before it can remove its partial file.
   std::signal(SIGXFSZ, SIG_IGN);
   svd_program::set_large_block_policy();
+#ifdef SVD_PROGRAM_USES_CHOLMOD
+  // CHOLMOD's dense blocks go through the BLAS: OpenBLAS on one thread, since its pool would
+  // spin on the other cores and its rounding changes with its number of threads (the output
+  // must not depend on --threads)
+  if(openblas_set_num_threads != nullptr)
+    openblas_set_num_threads(1);
+#endif
   try
   {
     return svd_program::run_main(argc, argv);

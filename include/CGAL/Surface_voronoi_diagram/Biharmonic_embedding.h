@@ -28,7 +28,6 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
-#include <CGAL/Surface_voronoi_diagram/internal/deprecation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
@@ -52,24 +51,6 @@
 #include <vector>
 
 namespace CGAL {
-
-namespace Surface_voronoi {
-/// \ingroup PkgSurfaceVoronoiDiagramDeprecated
-/// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`
-/// (for `dimension`), `Surface_voronoi::parameters::eigen_tolerance` (for `tolerance`) and
-/// `Surface_voronoi::parameters::max_eigen_solver_restarts` (for `max_iterations`) of
-/// `CGAL::Biharmonic_embedding`.
-struct CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
-Biharmonic_options
-{
-  /// the dimension `d`
-  std::size_t dimension = 10;
-  /// the relative tolerance of the eigen-solver
-  double tolerance = 1e-10;
-  /// the most restarts of the eigen-solver
-  std::size_t max_iterations = 1000;
-};
-} // namespace Surface_voronoi
 
 /// \ingroup PkgSurfaceVoronoiDiagramMetrics
 ///
@@ -95,27 +76,19 @@ Biharmonic_options
 ///         default: the mesh's internal `CGAL::vertex_point` map
 /// \tparam GeomTraits a model of `Kernel`; default: the kernel of the point type
 /// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
-///         factorization; default: `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLLT`
-///         in Eigen's AMD ordering, and from 100,000 vertices up, when the macro
-///         `CGAL_USE_METIS` is defined (the package's CMake target defines it and links
-///         `metis` when it finds Debian's libmetis-dev), the package's own supernodal
-///         Cholesky factorization in a METIS nested-dissection ordering (at 537k vertices
-///         it factorizes 4-5x faster than the simplicial one and solves 1.4x faster). Both
-///         give the same results on every machine and every run: their dense blocks run
-///         through Eigen's single-threaded kernels compiled into the program.
+///         factorization of \f$ L - \sigma M \f$ (symmetric positive definite); default:
+///         `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLLT` in the fill-reducing order
+///         `Eigen::MetisOrdering<int>` when the macro `CGAL_METIS_ENABLED` is defined (CGAL's
+///         METIS support, `CGAL::METIS_support`, defines it; so does the package's CMake target
+///         when it finds METIS), else `Eigen::AMDOrdering<int>`. On large meshes a supernodal
+///         factorization is faster: CHOLMOD's through Eigen's `CholmodSupport`, as
 ///         `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
-///         also works, but its dense blocks go through the BLAS, whose rounding changes
-///         with the number of BLAS threads and the processor: its embeddings differ in their
-///         last bits from one machine, or one thread count, to another.
+///         (see the example `biharmonic_cholmod.cpp`). Its dense blocks go through the BLAS,
+///         whose rounding may change with the number of BLAS threads: a program that wants
+///         the same embedding whatever the thread count runs the BLAS on one thread.
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
-///         `CGAL::Parallel_if_available_tag`: with threads (TBB), the package's supernodal
-///         Cholesky factorizes and solves the two halves of the nested-dissection ordering at
-///         once, with the same numbers in the same order: the embedding is the same bits on
-///         any number of threads. On two cores at igea-537k the numeric factorization takes
-///         0.9 s instead of 1.5 s, a solve 0.038-0.049 s instead of 0.062 s, the embedding
-///         (d = 10) 0.90x the time of one thread. The ordering and the eigen-solver's other
-///         steps stay sequential (METIS gave another ordering from run to run when called
-///         from two threads at once).
+///         `CGAL::Parallel_if_available_tag`: with threads (TBB), the indexed copy of the mesh
+///         is built on all cores; the eigen-solver runs on one thread.
 ///
 /// \cgalModels `SurfaceVoronoiEmbedding`
 template <class TriangleMesh,
@@ -224,22 +197,6 @@ public:
     compute(tm, vpm, given, dimension, tolerance, restarts, callback, times);
   }
 
-CGAL_SURFACE_VORONOI_DEPRECATED_BEGIN
-  /// \deprecated Use the named parameters `Surface_voronoi::parameters::embedding_dimension`,
-  /// `Surface_voronoi::parameters::eigen_tolerance` and
-  /// `Surface_voronoi::parameters::max_eigen_solver_restarts` instead of
-  /// `Surface_voronoi::Biharmonic_options`.
-  template <class NamedParameters = CGAL::parameters::Default_named_parameters>
-  CGAL_DEPRECATED_MSG("use the named parameters embedding_dimension, eigen_tolerance, max_eigen_solver_restarts")
-  Biharmonic_embedding(const TriangleMesh& tm, const Surface_voronoi::Biharmonic_options& options,
-                       const NamedParameters& np = CGAL::parameters::default_values())
-    : Biharmonic_embedding(tm, Surface_voronoi::parameters::embedding_dimension(options.dimension,
-                               Surface_voronoi::parameters::eigen_tolerance(options.tolerance,
-                               Surface_voronoi::parameters::max_eigen_solver_restarts(options.max_iterations, np))))
-  {}
-
-CGAL_SURFACE_VORONOI_DEPRECATED_END
-
   /// the largest dimension `tm` allows: its number of vertices minus its number of connected
   /// components (one zero eigenvalue each) minus one
   static std::size_t maximum_dimension(const TriangleMesh& tm)
@@ -295,10 +252,6 @@ CGAL_SURFACE_VORONOI_DEPRECATED_END
     }
     return e;
   }
-
-  /// \deprecated the mesh is the one the embedding was computed on: use `embedding(location)`
-  CGAL_DEPRECATED_MSG("use embedding(location)")
-  std::vector<double> embedding(const Face_location& location, const TriangleMesh&) const { return embedding(location); }
 
   /// squared biharmonic (embedding) distance between two vertices
   double squared_distance(vertex_descriptor u, vertex_descriptor v) const
@@ -362,7 +315,7 @@ private:
                                          + std::to_string(largest) + " (maximum_dimension())");
     }
     if(callback && !callback(0.1)) { cancel(); return; }
-    // the rounding noise of a zero eigenvalue (see below), before the solve takes L and M
+    // the rounding noise of a zero eigenvalue (see below)
     const double noise = 0x1p-52 * L.diagonal().sum() / M.diagonal().sum();
     SVi::Known_null_space null_space;
     std::vector<double> component_mass;   // 1^T M 1 over each component
@@ -391,9 +344,9 @@ private:
     SVi::Eigen_solve_result r;
     try
     {
-      r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(std::move(L), std::move(M), nev, tolerance,
+      r = SVi::smallest_generalized_eigenpairs<Linear_algebra_traits>(L, M, nev, tolerance,
                                                                        static_cast<Eigen::Index>(restarts), keep_going,
-                                                                       SVi::use_threads<ConcurrencyTag>(), null_space);
+                                                                       null_space);
     }
     catch(const SVi::Eigen_solve_cancelled&)
     {
@@ -402,10 +355,7 @@ private:
     }
     timer.stop("solve");
     if(times)
-    {
       times->counts["eigen_operations"] += double(r.operations);
-      times->counts["concurrent_subtrees"] += double(r.concurrent_subtrees);
-    }
 
     if(known_zero_modes)
       put_known_zero_modes_first(null_space, component_mass, r);

@@ -19,14 +19,14 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Supernodal_cholesky.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Spectral/cotangent_laplacian.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Spectral/generalized_eigensolver.h>
 
 #include <CGAL/assertions.h>
 
 #include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include <array>
 #include <cstddef>
@@ -96,18 +96,15 @@ public:
 
     // a fill-reducing numbering, in which the factorization works and solves
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
-#ifdef CGAL_USE_METIS
-    Nested_dissection_ordering<int>()(L, order);   // METIS from its smallest size up, AMD below
-#else
-    Eigen::AMDOrdering<int>()(L, order);
-#endif
+    Default_fill_reducing_ordering()(L, order);   // METIS's when CGAL_METIS_ENABLED, else AMD
     // order.indices()[k] is the vertex eliminated k-th
     const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> position = order.inverse();
     Eigen::SparseMatrix<double> ordered;
     ordered = L.selfadjointView<Eigen::Lower>().twistedBy(position);
     m_position.assign(n, 0);
     for(std::size_t v = 0; v < n; ++v) m_position[v] = std::size_t(position.indices()[Eigen::Index(v)]);
-    return m_cholesky.factor(ordered);
+    m_cholesky.compute(ordered);
+    return m_cholesky.info() == Eigen::Success;
   }
 
   std::size_t number_of_vertices() const { return m_mass.size(); }
@@ -163,7 +160,15 @@ private:
     const std::size_t w = block_size;
     for(std::size_t p : m_pinned)
       for(std::size_t j = 0; j < w; ++j) X[m_position[p] * w + j] = 0;
-    m_cholesky.solve_many_in_place(X.data(), w, workspace);
+    // the triangular solves run down columns: through a column-major copy of the block
+    const Eigen::Index n = Eigen::Index(number_of_vertices());
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> > rows(X.data(), n, Eigen::Index(w));
+    workspace.resize(X.size());
+    Eigen::Map<Eigen::MatrixXd> block(workspace.data(), n, Eigen::Index(w));
+    block = rows;
+    m_cholesky.matrixL().solveInPlace(block);
+    m_cholesky.matrixU().solveInPlace(block);
+    rows = block;
     for(std::size_t j = 0; j < count; ++j)
     {
       // the mass-weighted mean over the component, to zero
@@ -179,7 +184,8 @@ private:
 
   std::vector<double> m_mass, m_area;
   std::vector<std::size_t> m_component, m_pinned, m_first, m_members, m_position;
-  Supernodal_cholesky m_cholesky;
+  // already in a fill-reducing numbering (m_position): factorized as it is
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int> > m_cholesky;
 };
 
 } // namespace internal

@@ -11,8 +11,7 @@
 //
 // Smallest eigenpairs of L phi = lambda M phi (L symmetric positive semi-definite,
 // M diagonal positive) by a shift-invert Lanczos iteration, factorizing with a model of
-// SparseLinearAlgebraWithFactorTraits_d (as Heat_method_3 does), and with a way to cancel:
-// Spectra's, or on large meshes (the supernodal factorization) the package's Krylov-Schur.
+// SparseLinearAlgebraWithFactorTraits_d (as Heat_method_3 does), and with a way to cancel.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_SPECTRAL_GENERALIZED_EIGENSOLVER_H
@@ -20,15 +19,14 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Fixed_dense_blocking.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/nested_dissection_ordering.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/Supernodal_cholesky.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Spectral/block_krylov_schur.h>
 
 #include <CGAL/assertions.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#ifdef CGAL_METIS_ENABLED
+#include <Eigen/MetisSupport>
+#endif
 #include <CGAL/Eigen_solver_traits.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 #include <Spectra/Util/SimpleRandom.h>
@@ -86,8 +84,8 @@ struct Known_null_space
 
 /// The operator y = (A - sigma B)^{-1} x that Spectra's shift-invert mode needs, minus the
 /// eigenpairs already found. Spectra's own `SymShiftInvert` factorizes with SparseLU; a
-/// symmetric factorization (LDLT by default) is about twice as fast with half the memory,
-/// since A - sigma B is symmetric positive definite for sigma < 0.
+/// symmetric factorization (Cholesky by default) takes less time and memory, since
+/// A - sigma B is symmetric positive definite for sigma < 0.
 ///
 /// Deflation: a Krylov method started from one vector sees one direction per distinct
 /// eigenvalue (in exact arithmetic), so repeated eigenvalues (spheres, symmetric shapes) are
@@ -100,31 +98,14 @@ class Shift_invert_operator
 public:
   typedef double Scalar;
 
-  /// `parallel`: the package's supernodal factorization runs its independent subtrees on
-  /// concurrent threads (the same bits); other models ignore it
   Shift_invert_operator(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& B,
-                        const std::function<bool()>& keep_going, bool parallel = false)
+                        const std::function<bool()>& keep_going)
     : m_A(A), m_B(B), m_keep_going(keep_going), m_matrix(static_cast<int>(A.rows())),
-      m_x(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows())),
-      m_y(supernodal ? std::size_t(0) : static_cast<std::size_t>(A.rows()))
-  {
-    if constexpr(supernodal)
-      m_la.set_parallel(parallel);
-    else
-      CGAL_USE(parallel);
-  }
+      m_x(static_cast<int>(A.rows())), m_y(static_cast<int>(A.rows()))
+  {}
 
   Eigen::Index rows() const { return m_A.rows(); }
   Eigen::Index cols() const { return m_A.cols(); }
-
-  /// the subtrees the factorization ran on concurrent threads (0: one thread, or another model)
-  std::size_t concurrent_subtrees() const
-  {
-    if constexpr(supernodal)
-      return m_la.factorization().number_of_concurrent_subtrees();
-    else
-      return 0;
-  }
 
   void set_shift(const Scalar& sigma)
   {
@@ -135,8 +116,6 @@ public:
     double denominator = 1;
     if(!m_la.factor(m_matrix, denominator))
       throw Numerical_error("the factorization of L - sigma M failed (is the mesh degenerate?)");
-    if constexpr(supernodal)
-      m_matrix = typename LA::Matrix(0);   // its factor holds its own copy of the values
     m_sigma = sigma;
     m_factorized = true;
   }
@@ -172,19 +151,10 @@ public:
   {
     if(m_keep_going && !m_keep_going()) throw Eigen_solve_cancelled();
     const Eigen::Index n = rows();
-    if constexpr(supernodal)
-    {
-      // solved in place in Spectra's vector, without the traits' two copies
-      std::copy(x, x + n, y);
-      m_la.factorization().solve_in_place(y);
-    }
-    else
-    {
-      for(Eigen::Index i = 0; i < n; ++i) m_x[static_cast<int>(i)] = x[i];
-      if(!m_la.linear_solver(m_x, m_y))
-        throw Numerical_error("the solve with the factorization of L - sigma M failed");
-      for(Eigen::Index i = 0; i < n; ++i) y[i] = m_y[static_cast<int>(i)];
-    }
+    for(Eigen::Index i = 0; i < n; ++i) m_x[static_cast<int>(i)] = x[i];
+    if(!m_la.linear_solver(m_x, m_y))
+      throw Numerical_error("the solve with the factorization of L - sigma M failed");
+    for(Eigen::Index i = 0; i < n; ++i) y[i] = m_y[static_cast<int>(i)];
     if(m_deflation_vectors != nullptr && m_deflation_vectors->cols() > 0)
     {
       Eigen::Map<const Eigen::VectorXd> xv(x, n);
@@ -199,8 +169,6 @@ public:
   }
 
 private:
-  // the package's factorization: it keeps no reference to the matrix and solves in place
-  static constexpr bool supernodal = std::is_same<LA, Supernodal_cholesky_traits>::value;
   const Eigen::SparseMatrix<double>& m_A;
   const Eigen::SparseMatrix<double>& m_B;
   std::function<bool()> m_keep_going;
@@ -215,10 +183,10 @@ private:
   const double* m_mass = nullptr;
 };
 
-/// The product by B (the mass matrix) that Spectra's Lanczos takes five to six times per
+/// The product by B (the mass matrix) that Spectra's Lanczos takes several times per
 /// operator application, for its B inner products. The lumped mass matrix is diagonal, and
-/// multiplying by its diagonal takes a few times less than a sparse product, to the same
-/// bits (each entry is one product); any other B goes through the sparse product.
+/// multiplying by its diagonal is cheaper than a sparse product, to the same bits (each entry
+/// is one product); any other B goes through the sparse product.
 class Mass_product
 {
 public:
@@ -251,19 +219,16 @@ private:
   const double* m_diagonal = nullptr;   // B's values if B is diagonal
 };
 
-/// The default linear algebra: Eigen's simplicial LLT in Eigen's AMD order. With METIS, from
-/// `Nested_dissection_ordering::smallest_size` rows up, `smallest_generalized_eigenpairs()`
-/// renumbers the problem in nested-dissection order and factorizes it with the package's
-/// supernodal Cholesky instead (see nested_dissection_ordering.h for why not CHOLMOD's).
-/// Below that size both builds factorize in AMD order with the same code, so their
-/// embeddings are the same bits.
-#ifdef CGAL_USE_METIS
-typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
-                                                       Nested_dissection_ordering<int> > > Default_eigen_LA;
+/// The default linear algebra: Eigen's simplicial LLT, in METIS's nested-dissection order
+/// when CGAL is configured with METIS (`CGAL_METIS_ENABLED`, CGAL's METIS support), in
+/// Eigen's approximate minimum degree order otherwise.
+#ifdef CGAL_METIS_ENABLED
+typedef Eigen::MetisOrdering<int> Default_fill_reducing_ordering;
 #else
-typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
-                                                       Eigen::AMDOrdering<int> > > Default_eigen_LA;
+typedef Eigen::AMDOrdering<int> Default_fill_reducing_ordering;
 #endif
+typedef CGAL::Eigen_solver_traits<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower,
+                                                       Default_fill_reducing_ordering> > Default_eigen_LA;
 
 struct Eigen_solve_result
 {
@@ -272,7 +237,6 @@ struct Eigen_solve_result
   long iterations = 0;
   long operations = 0;
   int rounds = 0;                // Lanczos runs (1 + deflated runs that looked for missed ones)
-  std::size_t concurrent_subtrees = 0;   // the supernodal factorization's subtrees run on concurrent threads
 };
 
 /// The error of a run that stopped with `converged` of `count` eigenpairs after `restarts`
@@ -283,7 +247,7 @@ inline Numerical_error not_converged(Eigen::Index converged, Eigen::Index count,
                          + " restarts (try a smaller dimension, or check the mesh for degenerate triangles)");
 }
 
-/// One Lanczos run by Spectra (the default linear algebra): the `count` smallest eigenpairs,
+/// One Lanczos run by Spectra: the `count` smallest eigenpairs,
 /// from Spectra's own start vector in the first round and from a random one after.
 template <class Op>
 void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index ncv, double sigma, double tol,
@@ -310,7 +274,7 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
       // A later round must not start where the first did: the first start vector's part in
       // an eigenspace of several dimensions is the direction already found there, and
       // deflated, so a Krylov space grown from it again is blind to the other copies of a
-      // repeated eigenvalue (icosphere, 642 vertices: 8 of d = 10..40 missed one).
+      // repeated eigenvalue.
       Spectra::SimpleRandom<double> rng(static_cast<unsigned long>(round) + 1);   // seeds 0 and 1 are the first's
       Eigen::VectorXd start = rng.random_vec(n);
       null_space.project(mass, start.data());
@@ -336,66 +300,6 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
     throw Numerical_error("the eigen-solver returned non-finite values");
 }
 
-/// The same run by the package's Krylov-Schur iteration (block_krylov_schur.h), for the
-/// supernodal factorization of large meshes: the same operator (deflation included), the same
-/// convergence test, one vector at a time. At igea-537k, d = 10, the two rounds take 53
-/// operator applications where Spectra's took 61, and each new vector is orthogonalized with
-/// one or two passes over the basis where Spectra makes up to six: the embedding 13.8 ->
-/// 12.1 s. Blocks of 4 and 8 vectors solve more cheaply per vector (0.046 and 0.034 s against
-/// 0.074 s) but need 88 and 136 applications in the first round (one vector: 46), and their
-/// orthogonalization, matrix products against a wider basis, cost more than the solves saved.
-template <class Op>
-void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index ncv, double sigma, double tol,
-                        Eigen::Index max_iterations, unsigned long seed, bool deflated, const Known_null_space& null_space,
-                        const double* mass_diagonal, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors, Eigen_solve_result& r)
-{
-  const Eigen::Index n = op.rows();
-  // a column of an Eigen::Ref<const MatrixXd> is contiguous: the products read it in place
-  auto mass = [&](const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::MatrixXd& Y) {
-    Y.resize(X.rows(), X.cols());
-    for(Eigen::Index j = 0; j < X.cols(); ++j)
-      bop.perform_op(X.col(j).data(), Y.col(j).data());
-  };
-  // the shift-inverted operator takes M x, as Spectra hands it
-  Eigen::VectorXd mx(n);
-  auto apply = [&](const Eigen::Ref<const Eigen::MatrixXd>& X, Eigen::MatrixXd& Y) {
-    Y.resize(X.rows(), X.cols());
-    for(Eigen::Index j = 0; j < X.cols(); ++j)
-    {
-      bop.perform_op(X.col(j).data(), mx.data());
-      op.perform_op(mx.data(), Y.col(j).data());
-    }
-  };
-  const Eigen::Index basis = (std::max)(ncv, count + 2);
-  // random start vectors in the complement of the known null space
-  auto project = [&](Eigen::MatrixXd& X) {
-    for(Eigen::Index j = 0; j < X.cols(); ++j)
-      null_space.project(mass_diagonal, X.col(j).data());
-  };
-  const Block_krylov_schur_result k = block_krylov_schur(apply, mass, n, count, 1, basis, tol, static_cast<long>(max_iterations), seed, project);
-  r.iterations += k.restarts;
-  r.operations += k.applications;
-  ++r.rounds;
-  if(k.converged < count)
-    throw not_converged(k.converged, count, k.restarts);
-  if(!k.values.allFinite() || !k.vectors.allFinite())
-    throw Numerical_error("the eigen-solver returned non-finite values");
-  // lambda = sigma + 1 / theta, ascending. The operator is positive definite but for the
-  // deflated directions, which it maps to zero: a theta at or below zero is one of those
-  // (lambda "infinite", never kept), and a failure if nothing was deflated.
-  new_values.resize(count);
-  for(Eigen::Index i = 0; i < count; ++i)
-  {
-    if(k.values[i] > 0)
-      new_values[i] = sigma + 1 / k.values[i];
-    else if(deflated)
-      new_values[i] = std::numeric_limits<double>::infinity();
-    else
-      throw Numerical_error("the eigen-solver found a non-positive eigenvalue of (L - sigma M)^-1 M; is the mesh degenerate?");
-  }
-  new_vectors = k.vectors;
-}
-
 /// Computes the `nev` smallest eigenpairs (with a known null space, the `nev` smallest of the
 /// M-orthogonal complement of its span: its zero eigenvalues are not among them). The shift
 /// is negative and scaled to the mesh (eigenvalues scale as 1/size^2), so L - sigma M is
@@ -403,17 +307,15 @@ void krylov_schur_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::In
 /// without complaint.
 /// `keep_going`, if set, is asked before every application of the operator; returning
 /// false throws `Eigen_solve_cancelled`.
-template <class LA>
-Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseMatrix<double>& L,
-                                                            const Eigen::SparseMatrix<double>& M,
-                                                            Eigen::Index nev,
-                                                            double tolerance,
-                                                            Eigen::Index max_iterations,
-                                                            const std::function<bool()>& keep_going,
-                                                            bool parallel = false,
-                                                            const Known_null_space& null_space = Known_null_space())
+template <class LA = Default_eigen_LA>
+Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
+                                                   const Eigen::SparseMatrix<double>& M,
+                                                   Eigen::Index nev,
+                                                   double tolerance = 1e-10,
+                                                   Eigen::Index max_iterations = 1000,
+                                                   const std::function<bool()>& keep_going = std::function<bool()>(),
+                                                   const Known_null_space& null_space = Known_null_space())
 {
-  const Fixed_dense_blocking same_bits_on_every_machine;   // the Ritz pairs' and restarts' products too
   const Eigen::Index n = L.rows();
   CGAL_precondition_msg(nev >= 1 && nev + null_space.number_of_components < n, "more vertices than eigenpairs are needed");
   CGAL_precondition(null_space.empty() || static_cast<Eigen::Index>(null_space.component.size()) == n);
@@ -427,7 +329,7 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   typedef Shift_invert_operator<LA> Op;
   typedef Mass_product BOp;
   // on the heap, to free the factorization before the result is put together
-  std::unique_ptr<Op> op(new Op(L, M, keep_going, parallel));
+  std::unique_ptr<Op> op(new Op(L, M, keep_going));
   BOp bop(M);
   op->set_shift(sigma);
   // the projection on the known null space's complement takes M's diagonal (M is lumped)
@@ -439,7 +341,6 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   }
 
   Eigen_solve_result r;
-  r.concurrent_subtrees = op->concurrent_subtrees();
   Eigen::VectorXd values;
   Eigen::MatrixXd vectors(n, 0);
   const int max_rounds = 8;
@@ -455,19 +356,13 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
     op->set_deflation(vectors, values);
     auto solve = [&](Eigen::Index count, Eigen::Index ncv, double tol, Eigen::VectorXd& new_values, Eigen::MatrixXd& new_vectors) {
       ncv = (std::min)(n, ncv);
-      if constexpr(std::is_same<LA, Supernodal_cholesky_traits>::value)
-        krylov_schur_solve(*op, bop, count, ncv, sigma, tol, max_iterations, static_cast<unsigned long>(round) + 1,
-                           round > 0 || !null_space.empty(), null_space, mass.data(), new_values, new_vectors, r);
-      else
-        spectra_solve(*op, bop, count, ncv, sigma, tol, max_iterations, round, null_space, mass.data(), new_values, new_vectors, r);
+      spectra_solve(*op, bop, count, ncv, sigma, tol, max_iterations, round, null_space, mass.data(), new_values, new_vectors, r);
     };
     Eigen::VectorXd new_values;
     Eigen::MatrixXd new_vectors;
     // The Krylov basis is ncv vectors of the mesh's size, the embedding's largest block of
-    // memory. Spectra asks for ncv >= 2 nev; with the shift at 0 the wanted eigenvalues are
-    // the dominant ones, and twice the count converges in as many operator applications as
-    // four times did (igea-537k, d = 10: 61 against 62; d = 50: 155 against 230, in 0.6x the
-    // time and 300 MiB less), to the same eigenvalues within 3e-14.
+    // memory. Spectra asks for ncv >= 2 nev; with the shift near 0 the wanted eigenvalues are
+    // the dominant ones, and twice the count converges about as fast as a wider basis.
     const Eigen::Index accurate_ncv = (std::max<Eigen::Index>)(2 * want + 1, 20);
     if(round == 0)
       solve(want, accurate_ncv, tolerance, new_values, new_vectors);
@@ -476,8 +371,8 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
       // A cheap look for anything missed: the smallest eigenvalue of the deflated problem
       // alone, to a loose tolerance (a Ritz value of the shift-inverted operator lies above
       // the eigenvalue it converges to, so a value below the limit is never a false alarm).
-      // Only if one shows up are a few solved accurately. Looking for four at 1e-6, as
-      // before, cost as many operator applications as the first run.
+      // Only if one shows up are a few solved accurately: looking for several to the full
+      // tolerance every round would cost about as much as the first run.
       solve(1, 16, (std::max)(tolerance, 1e-3), new_values, new_vectors);
       const double limit = values[(std::min)(nev, found) - 1];
       if((new_values.array() < limit * (1 - 1e-6)).any())
@@ -529,59 +424,6 @@ Eigen_solve_result smallest_generalized_eigenpairs_in_order(const Eigen::SparseM
   else
     r.eigenvectors = vectors.leftCols(nev);
   return r;
-}
-
-/// Same as `smallest_generalized_eigenpairs_in_order()`, with the matrices taken over (a
-/// caller that has no further use for them moves them in). With the default linear algebra on a
-/// large mesh, the problem is first renumbered in the nested-dissection order, then in a
-/// postorder of its elimination tree (which keeps the factor's non-zeros and makes every
-/// supernode's columns consecutive), and factorized by the supernodal Cholesky: at igea-537k
-/// it factorizes in 0.8 s where Eigen's simplicial LLT took 3.4-4.3 s, and solves in 0.037
-/// against 0.052 s. A solve then permutes no vector, where an ordered factorization permutes
-/// twice per solve (10% of the eigen-solve at 537k vertices, scattered reads of vectors
-/// larger than the cache). The eigenvectors are numbered back.
-template <class LA = Default_eigen_LA>
-Eigen_solve_result smallest_generalized_eigenpairs(Eigen::SparseMatrix<double> L,
-                                                   Eigen::SparseMatrix<double> M,
-                                                   Eigen::Index nev,
-                                                   double tolerance = 1e-10,
-                                                   Eigen::Index max_iterations = 1000,
-                                                   const std::function<bool()>& keep_going = std::function<bool()>(),
-                                                   bool parallel = false,
-                                                   const Known_null_space& null_space = Known_null_space())
-{
-#ifdef CGAL_USE_METIS
-  typedef Nested_dissection_ordering<int> Ordering;
-  typename Ordering::PermutationType order;   // order.indices()[k]: the k-th row eliminated
-  if(std::is_same<LA, Default_eigen_LA>::value && L.rows() >= Ordering::smallest_size && Ordering::metis(L, order))
-  {
-    Eigen::SparseMatrix<double> renumbered_L, renumbered_M;
-    renumbered_L = L.selfadjointView<Eigen::Lower>().twistedBy(order.inverse());
-    const std::vector<int> post = Supernodal_cholesky::postorder(Supernodal_cholesky::elimination_tree(renumbered_L));
-    typename Ordering::PermutationType eliminated(L.rows());   // the k-th is METIS's post[k]-th
-    for(std::size_t k = 0; k < post.size(); ++k)
-      eliminated.indices()[static_cast<Eigen::Index>(k)] = order.indices()[post[k]];
-    const typename Ordering::PermutationType to_new = eliminated.inverse();
-    renumbered_L = L.selfadjointView<Eigen::Lower>().twistedBy(to_new);
-    renumbered_M = M.selfadjointView<Eigen::Lower>().twistedBy(to_new);
-    Eigen::SparseMatrix<double>().swap(L);   // not needed any more (45 MB at 537k vertices)
-    Eigen::SparseMatrix<double>().swap(M);
-    Known_null_space renumbered_null_space;
-    if(!null_space.empty())
-    {
-      renumbered_null_space.number_of_components = null_space.number_of_components;
-      renumbered_null_space.component.resize(null_space.component.size());
-      for(std::size_t k = 0; k < null_space.component.size(); ++k)
-        renumbered_null_space.component[k] = null_space.component[static_cast<std::size_t>(eliminated.indices()[static_cast<Eigen::Index>(k)])];
-    }
-    Eigen_solve_result r = smallest_generalized_eigenpairs_in_order<Supernodal_cholesky_traits>(renumbered_L, renumbered_M, nev, tolerance,
-                                                                                                 max_iterations, keep_going, parallel,
-                                                                                                 renumbered_null_space);
-    r.eigenvectors = eliminated * r.eigenvectors;   // row k goes back to row eliminated[k]
-    return r;
-  }
-#endif
-  return smallest_generalized_eigenpairs_in_order<LA>(L, M, nev, tolerance, max_iterations, keep_going, parallel, null_space);
 }
 
 } // namespace internal
