@@ -135,7 +135,7 @@ public:
       m_triangles.reserve(m_mesh.number_of_faces());
       for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
         m_triangles.emplace_back(m_mesh.corner(f, 0), m_mesh.corner(f, 1), m_mesh.corner(f, 2));
-      m_tree.reset(new Tree(m_triangles.begin(), m_triangles.end()));
+      m_tree = std::make_shared<Tree>(m_triangles.begin(), m_triangles.end());
       m_tree->accelerate_distance_queries();
     }
     const auto closest = m_tree->closest_point_and_primitive(p);
@@ -169,7 +169,9 @@ private:
   const Indexed_mesh<TriangleMesh>& m_mesh;
   double m_max_distance;
   mutable std::vector<Double_kernel::Triangle_3> m_triangles;
-  mutable std::unique_ptr<Tree> m_tree;
+  // shared_ptr: the tree's code is instantiated only where sites are points, not with the
+  // descriptors and locations of the common case
+  mutable std::shared_ptr<Tree> m_tree;
   mutable bool m_too_far = false;
   mutable double m_too_far_distance = 0;
 };
