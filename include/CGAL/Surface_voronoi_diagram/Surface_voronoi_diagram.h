@@ -519,7 +519,9 @@ private:
        && std::all_of(previous->sites.begin(), previous->sites.end(), [&](std::uint32_t s) { return s < m_data.sites.size(); }))
       settings.previous = previous.get();
     if(callback && !callback(0.05)) { cancel(); return; }
-    compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>());
+    // the restricted Voronoi diagram's search is compiled only where a candidate selection is given
+    compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>(),
+            std::integral_constant<bool, !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value>());
   }
 
   template <class NamedParameters, class Site_description>
@@ -530,26 +532,30 @@ private:
   template <class NamedParameters, class Site_description>
   static double weight_of(const NamedParameters&, const Site_description&, std::size_t, std::false_type) { return 0.; }
 
+  template <bool MaySelectGlobally>
   void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
                const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
-               Surface_voronoi::internal::Stage_timer& timer, std::true_type)
+               Surface_voronoi::internal::Stage_timer& timer, std::true_type, std::integral_constant<bool, MaySelectGlobally>)
   {
     namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
     m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
     timer.stop("setup");
-    SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values> builder(m_data, *m_data.embedding, settings, callback, times);
+    SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values, MaySelectGlobally> builder(m_data, *m_data.embedding, settings,
+                                                                                         callback, times);
     if(!builder.run()) cancel();
   }
 
+  template <bool MaySelectGlobally>
   void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
                const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
-               Surface_voronoi::internal::Stage_timer& timer, std::false_type)
+               Surface_voronoi::internal::Stage_timer& timer, std::false_type, std::integral_constant<bool, MaySelectGlobally>)
   {
     namespace SVi = Surface_voronoi::internal;
     const SVi::Lazy_values<TriangleMesh, Metric> values(*m_data.mesh, metric, m_data.sites);
     timer.stop("setup");
-    SVi::Diagram_builder<TriangleMesh, SVi::Lazy_values<TriangleMesh, Metric> > builder(m_data, values, settings, callback, times);
+    SVi::Diagram_builder<TriangleMesh, SVi::Lazy_values<TriangleMesh, Metric>, MaySelectGlobally> builder(m_data, values, settings,
+                                                                                                          callback, times);
     if(!builder.run()) cancel();
   }
 

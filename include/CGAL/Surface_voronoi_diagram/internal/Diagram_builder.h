@@ -52,7 +52,9 @@ struct Builder_settings
   const Candidate_sites* previous = nullptr;   // Lloyd's: the candidates before the sites moved (embedding metrics)
 };
 
-template <class TriangleMesh, class Fields>
+// `MaySelectGlobally`: whether the caller may ask for GLOBAL_NEAREST candidates; without it,
+// the restricted Voronoi diagram's search is not compiled in.
+template <class TriangleMesh, class Fields, bool MaySelectGlobally = true>
 class Diagram_builder
 {
 public:
@@ -225,7 +227,7 @@ private:
 
   bool use_global_nearest() const
   {
-    if(m_settings.candidates != Candidate_selection::GLOBAL_NEAREST) return false;
+    if(!MaySelectGlobally || m_settings.candidates != Candidate_selection::GLOBAL_NEAREST) return false;
     CGAL_precondition_msg((std::is_same<Fields, Embedding_values>::value),
                           "the restricted Voronoi diagram (GLOBAL_NEAREST) needs an embedding metric");
     return std::is_same<Fields, Embedding_values>::value;
@@ -233,7 +235,7 @@ private:
 
   void find_global_nearest(Candidate_lists& candidates) const
   {
-    find_global_nearest(candidates, std::is_same<Fields, Embedding_values>());
+    find_global_nearest(candidates, std::integral_constant<bool, MaySelectGlobally && std::is_same<Fields, Embedding_values>::value>());
   }
   void find_global_nearest(Candidate_lists& candidates, std::true_type) const
   {
