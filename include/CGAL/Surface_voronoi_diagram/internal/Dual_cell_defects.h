@@ -40,7 +40,7 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-// Cells not closed disks: find_cells_not_disks(). Two cells share several arcs when the
+// Cells not closed disks: Labelled_arrangement::cells_not_disks(). Two cells share several arcs when the
 // bisector edges between them form several components; three cells meet several times when
 // several Voronoi vertices (inside the surface, exactly three cells around) have them.
 template <class Diagram>
@@ -58,7 +58,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   const std::int64_t border = Labelled_arrangement::border;
   auto label = [&](Halfedge h) { return labelled.label(h); };
 
-  find_cells_not_disks(arrangement, labelled.site_map(), n, cells_not_disks);
+  labelled.cells_not_disks(n, cells_not_disks);
 
   // edges between two cells: an arc's piece
   std::vector<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> > bisector_edges;
