@@ -68,9 +68,10 @@ inline std::pair<std::size_t, bool> components_of_edges(const std::vector<std::p
   return { components, degree_ok };
 }
 
-// Cells not closed disks: Labelled_arrangement::cells_not_disks(). Two cells share several arcs when the
-// bisector edges between them form several components; three cells meet several times when
-// several Voronoi vertices (inside the surface, exactly three cells around) have them.
+// Cells not closed disks: Labelled_arrangement::cells_not_disks(). Two cells share several
+// arcs when the bisector edges between them form several components; three cells meet several
+// times when several Voronoi vertices (inside the surface, exactly three cells around) have
+// them.
 template <class Diagram>
 void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& cells_not_disks,
                             std::vector<std::pair<std::size_t, std::size_t> >& pairs_in_several_arcs,
