@@ -478,7 +478,8 @@ private:
     for(const auto& s : sites)
     {
       m_data.sites.push_back(locator.locate(s, m_data.sites.size()));
-      m_data.sites.back().weight = weight_of(np, s, m_data.sites.size() - 1, std::integral_constant<bool, has_weights>());
+      if constexpr(has_weights)
+        m_data.sites.back().weight = SVi::site_weight(get_parameter(np, SVnp::site_weight_map), s, m_data.sites.size() - 1);
       if(!std::isfinite(m_data.sites.back().weight))
         throw Surface_voronoi::Input_error("the weight of site " + std::to_string(m_data.sites.size() - 1) + " is not finite");
     }
@@ -519,44 +520,23 @@ private:
        && std::all_of(previous->sites.begin(), previous->sites.end(), [&](std::uint32_t s) { return s < m_data.sites.size(); }))
       settings.previous = previous.get();
     if(callback && !callback(0.05)) { cancel(); return; }
+    // the fields over the embedding's values, stored for the queries, or over the lazy metric;
     // the restricted Voronoi diagram's search is compiled only where a candidate selection is given
-    compute(metric, settings, callback, times, timer, SVi::Is_embedding<Metric>(),
-            std::integral_constant<bool, !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value>());
-  }
-
-  template <class NamedParameters, class Site_description>
-  static double weight_of(const NamedParameters& np, const Site_description& s, std::size_t i, std::true_type)
-  {
-    return Surface_voronoi::internal::site_weight(CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::site_weight_map), s, i);
-  }
-  template <class NamedParameters, class Site_description>
-  static double weight_of(const NamedParameters&, const Site_description&, std::size_t, std::false_type) { return 0.; }
-
-  template <bool MaySelectGlobally>
-  void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
-               const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
-               Surface_voronoi::internal::Stage_timer& timer, std::true_type, std::integral_constant<bool, MaySelectGlobally>)
-  {
-    namespace SVi = Surface_voronoi::internal;
-    CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
-    m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
-    timer.stop("setup");
-    SVi::Diagram_builder<TriangleMesh, SVi::Embedding_values, MaySelectGlobally> builder(m_data, *m_data.embedding, settings,
-                                                                                         callback, times);
-    if(!builder.run()) cancel();
-  }
-
-  template <bool MaySelectGlobally>
-  void compute(Metric& metric, const Surface_voronoi::internal::Builder_settings& settings,
-               const std::function<bool(double)>& callback, Surface_voronoi::internal::Stage_times* times,
-               Surface_voronoi::internal::Stage_timer& timer, std::false_type, std::integral_constant<bool, MaySelectGlobally>)
-  {
-    namespace SVi = Surface_voronoi::internal;
-    const SVi::Lazy_values<TriangleMesh, Metric> values(*m_data.mesh, metric, m_data.sites);
-    timer.stop("setup");
-    SVi::Diagram_builder<TriangleMesh, SVi::Lazy_values<TriangleMesh, Metric>, MaySelectGlobally> builder(m_data, values, settings,
-                                                                                                          callback, times);
-    if(!builder.run()) cancel();
+    constexpr bool may_select_globally = !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value;
+    auto build = [&](const auto& fields) {
+      timer.stop("setup");
+      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, may_select_globally> builder(m_data, fields, settings,
+                                                                                                      callback, times);
+      if(!builder.run()) cancel();
+    };
+    if constexpr(SVi::Is_embedding<Metric>::value)
+    {
+      CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
+      m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
+      build(*m_data.embedding);
+    }
+    else
+      build(SVi::Lazy_values<TriangleMesh, Metric>(*m_data.mesh, metric, m_data.sites));
   }
 
   // metrics without is_cancelled() are never cancelled (chosen by int/long, not by "...":

@@ -209,10 +209,7 @@ void make_arrangement(const Diagram& diagram, PolygonMesh& out,
       const halfedge_descriptor o = opposite(h, out);
       // cell boundaries: bisectors, and breaklines (a cell reaching both sides of a
       // breakline around its end still has the breakline as a boundary)
-      if(!is_border(o, out) && (label(h) != label(o) || on_breakline(h)))
-        put(edge_bisector, edge(h, out), true);
-      else
-        put(edge_bisector, edge(h, out), false);
+      put(edge_bisector, edge(h, out), !is_border(o, out) && (label(h) != label(o) || on_breakline(h)));
     }
   std::vector<std::size_t> labels;
   if(want_vertices)

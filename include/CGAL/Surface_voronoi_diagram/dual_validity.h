@@ -120,34 +120,27 @@ struct Dual_validity
   std::string reason() const
   {
     if(is_valid()) return std::string();
-    std::string what;
-    auto add = [&](std::size_t n, const char* one, const char* many) {
-      if(n == 0) return;
-      if(!what.empty()) what += ", ";
-      what += std::to_string(n) + " " + (n == 1 ? one : many);
+    std::string what, cause;
+    auto append = [](std::string& to, const std::string& text) { to += (to.empty() ? "" : ", ") + text; };
+    auto add = [&](std::string& to, std::size_t n, const char* one, const char* many) {
+      if(n > 0) append(to, std::to_string(n) + " " + (n == 1 ? one : many));
     };
     if(triangles == 0) what = "no triangle";
-    add(non_manifold_edges, "non-manifold edge", "non-manifold edges");
-    add(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices");
+    add(what, non_manifold_edges, "non-manifold edge", "non-manifold edges");
+    add(what, non_manifold_vertices, "non-manifold vertex", "non-manifold vertices");
     if(what.empty() && !is_polygon_mesh && triangles > 0) what = "not an oriented manifold";
-    add(degenerate_triangles, "degenerate triangle", "degenerate triangles");
-    add(flipped_triangles, "flipped triangle", "flipped triangles");
-    add(unused_sites, "site in no triangle", "sites in no triangle");
+    add(what, degenerate_triangles, "degenerate triangle", "degenerate triangles");
+    add(what, flipped_triangles, "flipped triangle", "flipped triangles");
+    add(what, unused_sites, "site in no triangle", "sites in no triangle");
     if(is_polygon_mesh && components != input_components)
-      what += (what.empty() ? "" : ", ") + std::to_string(components) + " components (the input has " + std::to_string(input_components) + ")";
+      append(what, std::to_string(components) + " components (the input has " + std::to_string(input_components) + ")");
     if(is_polygon_mesh && genus != input_genus)
-      what += (what.empty() ? "" : ", ") + std::string("genus ") + std::to_string(genus) + " (the input's is " + std::to_string(input_genus) + ")";
+      append(what, "genus " + std::to_string(genus) + " (the input's is " + std::to_string(input_genus) + ")");
     if(is_polygon_mesh && boundary_loops != input_boundary_loops)
-      what += (what.empty() ? "" : ", ") + std::to_string(boundary_loops) + " boundary loops (the input has " + std::to_string(input_boundary_loops) + ")";
-    std::string cause;
-    auto because = [&](std::size_t n, const char* one, const char* many) {
-      if(n == 0) return;
-      if(!cause.empty()) cause += ", ";
-      cause += std::to_string(n) + " " + (n == 1 ? one : many);
-    };
-    because(cells_not_disks.size(), "cell not a disk", "cells not disks");
-    because(pairs_in_several_arcs.size(), "pair of cells sharing several arcs", "pairs of cells sharing several arcs");
-    because(triples_at_several_vertices.size(), "triple of cells meeting at several vertices", "triples of cells meeting at several vertices");
+      append(what, std::to_string(boundary_loops) + " boundary loops (the input has " + std::to_string(input_boundary_loops) + ")");
+    add(cause, cells_not_disks.size(), "cell not a disk", "cells not disks");
+    add(cause, pairs_in_several_arcs.size(), "pair of cells sharing several arcs", "pairs of cells sharing several arcs");
+    add(cause, triples_at_several_vertices.size(), "triple of cells meeting at several vertices", "triples of cells meeting at several vertices");
     return cause.empty() ? what : what + " (" + cause + ")";
   }
 };
@@ -212,13 +205,10 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
         ? std::all_of(at_vertex->second.begin(), at_vertex->second.end(), against)
           && std::any_of(t.begin(), t.end(), [&](std::size_t s) { return against(internal::site_face_normal(*data.mesh, data.sites[s])); })
         : against(internal::sum_of_site_face_normals(*data.mesh, data.sites, t));
-    if(flipped)
-    {
-      ++r.flipped_triangles;
-      r.flipped_triangle_indices.push_back(index);
-    }
+    if(flipped) r.flipped_triangle_indices.push_back(index);
   }
-  for(std::size_t i = 0; i < n; ++i) r.unused_sites += (used[i] == 0);
+  r.flipped_triangles = r.flipped_triangle_indices.size();
+  r.unused_sites = std::size_t(std::count(used.begin(), used.end(), std::uint8_t(0)));
   for(const auto& e : edge_uses)
     r.non_manifold_edges += (e.second.first > 1 || e.second.second > 1);
   r.non_manifold_vertices = internal::number_of_non_manifold_soup_vertices(n, soup);

@@ -90,46 +90,42 @@ power_weight_samples(const TriangleMesh& tm, const VertexPointMap& vpm,
 }
 
 // The squared distances of the metric between the site and the samples. For an embedding,
-// between the embedded points (the site's by barycentric interpolation).
+// between the embedded points (the site's by barycentric interpolation). For a lazy metric,
+// the site and one site at each sample vertex are given to `set_sites()`, and the value of
+// the site at a sample is taken minus that of the sample's own site there, which removes any
+// term of the vertex alone that the model adds to all sites' values.
 template <class Metric, class Location, class VertexRange>
-std::vector<double> squared_metric_distances(Metric& metric, const Location& site,
-                                             const VertexRange& samples, std::true_type /* embedding */)
+std::vector<double> squared_metric_distances(Metric& metric, const Location& site, const VertexRange& samples)
 {
   const auto& tm = metric.triangle_mesh();
-  const std::size_t d = metric.dimension();
-  std::vector<double> e(d, 0.), c(d);
-  const auto corners = face_corners(site.first, tm);
-  for(int k = 0; k < 3; ++k)
-  {
-    metric.coordinates(corners[k], c.begin());
-    for(std::size_t j = 0; j < d; ++j) e[j] += site.second[k] * c[j];
-  }
   std::vector<double> out;
-  for(auto v : samples)
+  if constexpr(Is_embedding<typename std::remove_const<Metric>::type>::value)
   {
-    metric.coordinates(v, c.begin());
-    double s = 0;
-    for(std::size_t j = 0; j < d; ++j) s += (c[j] - e[j]) * (c[j] - e[j]);
-    out.push_back(s);
+    const std::size_t d = metric.dimension();
+    std::vector<double> e(d, 0.), c(d);
+    const auto corners = face_corners(site.first, tm);
+    for(int k = 0; k < 3; ++k)
+    {
+      metric.coordinates(corners[k], c.begin());
+      for(std::size_t j = 0; j < d; ++j) e[j] += site.second[k] * c[j];
+    }
+    for(auto v : samples)
+    {
+      metric.coordinates(v, c.begin());
+      double s = 0;
+      for(std::size_t j = 0; j < d; ++j) s += (c[j] - e[j]) * (c[j] - e[j]);
+      out.push_back(s);
+    }
   }
-  return out;
-}
-
-// For a lazy metric: the site and one site at each sample vertex are given to `set_sites()`,
-// and the value of the site at a sample is taken minus that of the sample's own site there,
-// which removes any term of the vertex alone that the model adds to all sites' values.
-template <class Metric, class Location, class VertexRange>
-std::vector<double> squared_metric_distances(Metric& metric, const Location& site,
-                                             const VertexRange& samples, std::false_type /* lazy */)
-{
-  const auto& tm = metric.triangle_mesh();
-  std::vector<Location> sites(1, site);
-  for(auto v : samples) sites.push_back(CGAL::Polygon_mesh_processing::locate_vertex<double>(v, tm));
-  metric.set_sites(sites);
-  std::vector<double> out;
-  std::size_t i = 1;
-  for(auto v : samples)
-    out.push_back(metric.squared_distance(0, v) - metric.squared_distance(i++, v));
+  else
+  {
+    std::vector<Location> sites(1, site);
+    for(auto v : samples) sites.push_back(CGAL::Polygon_mesh_processing::locate_vertex<double>(v, tm));
+    metric.set_sites(sites);
+    std::size_t i = 1;
+    for(auto v : samples)
+      out.push_back(metric.squared_distance(0, v) - metric.squared_distance(i++, v));
+  }
   return out;
 }
 
@@ -223,8 +219,7 @@ double weight_for_length(Metric& metric,
   const internal::Point_d p = CGAL::Polygon_mesh_processing::construct_point(
       site, tm, CGAL::parameters::vertex_point_map(internal::make_double_point_map(vpm)).geom_traits(internal::Double_kernel()));
   const auto samples = internal::power_weight_samples(tm, vpm, site, p, length);
-  const std::vector<double> squared = internal::squared_metric_distances(metric, site, samples,
-                                                                         internal::Is_embedding<Plain_metric>());
+  const std::vector<double> squared = internal::squared_metric_distances(metric, site, samples);
   double ratio = std::numeric_limits<double>::infinity();
   for(std::size_t k = 0; k < samples.size(); ++k)
   {

@@ -68,7 +68,7 @@ inline Point_d scaled_point(const Point_d& p, int e)
   return Point_d(std::ldexp(p[0], e), std::ldexp(p[1], e), std::ldexp(p[2], e));
 }
 
-// the area of face f on the points scaled by 2^e
+// the area of face f on the points scaled by 2^e (0: as they are)
 template <class TriangleMesh, class VertexPointMap, class Face>
 double scaled_face_area(const TriangleMesh& tm, const VertexPointMap& vpm, Face f, int e)
 {
@@ -202,9 +202,7 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
   double total = 0;
   for(auto f : fs)
   {
-    const auto h = halfedge(f, tm);
-    total += internal::triangle_area(internal::to_point_d(get(vpm, source(h, tm))), internal::to_point_d(get(vpm, target(h, tm))),
-                                     internal::to_point_d(get(vpm, target(next(h, tm), tm))));
+    total += internal::scaled_face_area(tm, vpm, f, 0);
     cumulative.push_back(total);
   }
   // Drawing in [0, total) loops forever for a total of 0 and recurses without end for an
@@ -324,8 +322,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   double area = 0;
   for(std::size_t k = 0; k < fs.size(); ++k)
   {
-    const auto h = halfedge(fs[k], tm);
-    face_area[k] = internal::triangle_area(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
+    face_area[k] = internal::scaled_face_area(tm, vpm, fs[k], 0);
     area += face_area[k];
   }
   // outside the documented coordinate range, on the points scaled by a power of two
@@ -347,7 +344,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   // with a density, each candidate's radius shrinks as the square root of its density, so
   // that a disk holds as many sites wherever it is; the packing is then of the mass (the
   // integral of the density) instead of the area
-  std::vector<double> radius_scale;
+  std::vector<double> radius_scale(all, 1.);
   if constexpr(internal::Has_density<CGAL_NP_CLASS>::value)
   {
     const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
@@ -355,7 +352,6 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     for(std::size_t k = 0; k < fs.size(); ++k)
       mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;
     const std::vector<std::array<double, 3> > at_candidates = internal::location_corner_densities(tm, candidates, np);
-    radius_scale.resize(all);
     for(std::size_t i = 0; i < all; ++i)
       radius_scale[i] = 1 / std::sqrt(internal::density_at(at_candidates[i], candidates[i].second));
     area = mass;
@@ -375,47 +371,29 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   std::vector<std::vector<std::pair<std::size_t, double> > > neighbours(all);
   std::vector<double> weight(all, 0.);
   std::vector<std::size_t> found;
-  if(!radius_scale.empty())
-  {
-    // two candidates crowd each other within the sum of their radii: each searches twice its
-    // own radius, so the one with the larger radius finds the pair
-    std::vector<std::pair<std::size_t, std::size_t> > pairs;
-    for(std::size_t i = 0; i < all; ++i)
-    {
-      found.clear();
-      tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach * radius_scale[i], 0., Traits(ppm)));
-      for(std::size_t j : found)
-        if(j != i && std::sqrt(CGAL::squared_distance(points[i], points[j])) < r_max * (radius_scale[i] + radius_scale[j]))
-          pairs.emplace_back((std::min)(i, j), (std::max)(i, j));
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    for(const auto& p : pairs)
-    {
-      const double d = std::sqrt(CGAL::squared_distance(points[p.first], points[p.second]));
-      const double w = std::pow(1 - d / (r_max * (radius_scale[p.first] + radius_scale[p.second])), 8);
-      neighbours[p.first].emplace_back(p.second, w);
-      neighbours[p.second].emplace_back(p.first, w);
-    }
-    for(std::size_t i = 0; i < all; ++i)
-      for(const auto& nw : neighbours[i]) weight[i] += nw.second;
-  }
-  else
+  // two candidates crowd each other within the sum of their radii: each searches twice its
+  // own radius, so the one with the larger radius finds the pair
+  std::vector<std::pair<std::size_t, std::size_t> > pairs;
   for(std::size_t i = 0; i < all; ++i)
   {
     found.clear();
-    tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach, 0., Traits(ppm)));
-    std::sort(found.begin(), found.end());
+    tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach * radius_scale[i], 0., Traits(ppm)));
     for(std::size_t j : found)
-    {
-      if(j == i) continue;
-      const double d = std::sqrt(CGAL::squared_distance(points[i], points[j]));
-      if(d >= reach) continue;
-      const double w = std::pow(1 - d / reach, 8);
-      neighbours[i].emplace_back(j, w);
-      weight[i] += w;
-    }
+      if(j != i && std::sqrt(CGAL::squared_distance(points[i], points[j])) < r_max * (radius_scale[i] + radius_scale[j]))
+        pairs.emplace_back((std::min)(i, j), (std::max)(i, j));
   }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for(const auto& p : pairs)
+  {
+    const double d = std::sqrt(CGAL::squared_distance(points[p.first], points[p.second]));
+    const double w = std::pow(1 - d / (r_max * (radius_scale[p.first] + radius_scale[p.second])), 8);
+    neighbours[p.first].emplace_back(p.second, w);
+    neighbours[p.second].emplace_back(p.first, w);
+  }
+  // in increasing neighbour order, as the pairs are sorted
+  for(std::size_t i = 0; i < all; ++i)
+    for(const auto& nw : neighbours[i]) weight[i] += nw.second;
   // eliminate the most crowded candidate first; ties to the higher index, for determinism
   std::set<std::pair<double, std::size_t> > heap;
   for(std::size_t i = 0; i < m; ++i) heap.emplace(weight[i], i);

@@ -110,8 +110,7 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
   Mesh& m = r.mesh;
   std::vector<std::pair<Input_face, F> > f2f;
   r.input_face = internal::copy_with_input_faces(tm, vpm, m, f2f);
-  std::unordered_map<std::size_t, std::vector<F> > sub_faces;   // by index in f2f order
-  std::vector<F> copy_of;                                       // input face order -> copy
+  std::vector<std::vector<F> > sub_faces(f2f.size());           // by index in f2f order
   std::unordered_map<Input_face, std::size_t, boost::hash<Input_face> > input_index;
   for(std::size_t k = 0; k < f2f.size(); ++k)
   {
@@ -159,8 +158,8 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
       // (a, b, v) is counter-clockwise in the frame; flip when c is inside its circle and
       // the quad is strictly convex
       if(CGAL::side_of_oriented_circle(a, b, pv, c) != CGAL::ON_POSITIVE_SIDE) continue;
-      if(CGAL::orientation(pv, c, b) == CGAL::orientation(pv, c, a)) continue;
-      if(CGAL::orientation(pv, c, b) == CGAL::COLLINEAR || CGAL::orientation(pv, c, a) == CGAL::COLLINEAR) continue;
+      const CGAL::Orientation side_a = CGAL::orientation(pv, c, a), side_b = CGAL::orientation(pv, c, b);
+      if(side_a == side_b || side_a == CGAL::COLLINEAR || side_b == CGAL::COLLINEAR) continue;
       CGAL::Euler::flip_edge(h, m);
       ++r.flips;
       // after the flip the link of v changed: check its edges again

@@ -53,18 +53,6 @@ location_in_input_face(const TriangleMesh& tm, const VertexPointMap& vpm,
                                                          get(dvpm, target(next(h, tm), tm)), p)) };
 }
 
-// f(chain), with the site weights of np added if np has them
-template <class NamedParameters, class Chain, class Function>
-auto with_site_weights(const NamedParameters&, const Chain& chain, const Function& f, std::false_type)
-{
-  return f(chain);
-}
-template <class NamedParameters, class Chain, class Function>
-auto with_site_weights(const NamedParameters& np, const Chain& chain, const Function& f, std::true_type)
-{
-  return f(parameters::site_weight_map(CGAL::parameters::get_parameter(np, internal_np::site_weight_map), chain));
-}
-
 // The diagram's parameters that mean the same on a refined copy: those keyed by site index
 // (`site_weight_map`) and the candidate selection; the maps keyed by `tm`'s elements do not.
 template <class NamedParameters, class Function>
@@ -75,8 +63,10 @@ auto with_site_parameters(const NamedParameters& np, const Function& f)
   const auto chain = parameters::candidate_selection(
       choose_parameter(get_parameter(np, internal_np::candidate_selection), Candidate_selection::PROPAGATION),
       CGAL::parameters::number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(3))));
-  return with_site_weights(np, chain, f,
-                           std::integral_constant<bool, !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::site_weight_map_t>::value>());
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np::site_weight_map_t>::value)
+    return f(chain);
+  else
+    return f(parameters::site_weight_map(get_parameter(np, internal_np::site_weight_map), chain));
 }
 } // namespace internal
 

@@ -90,7 +90,6 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
   std::vector<Input_problem> problems;
   internal::Problem_list list(problems, 10);
   const bool topology_checked = choose_parameter(get_parameter(np, internal_np::checked_mesh_topology), false);
@@ -137,8 +136,7 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
   }
   if(index == 0)
     list.add(Input_problem::NO_SITES, 0, "there are no sites");
-  internal::check_weights(sites, np, list,
-                          std::integral_constant<bool, !is_default_parameter<NamedParameters, internal_np::site_weight_map_t>::value>());
+  internal::check_weights(sites, np, list);
   const Coincident_sites policy = choose_parameter(get_parameter(np, internal_np::coincident_sites), Coincident_sites::REJECT);
   if(policy == Coincident_sites::REJECT)
     for(const auto& pair : internal::find_coincident_sites(mesh, located))

@@ -109,7 +109,7 @@ std::vector<std::size_t> make_voronoi_polygon_mesh(const Diagram& diagram, Polyg
   const Arrangement::Mesh& mesh = arrangement.mesh();
   const std::size_t n = diagram.number_of_sites();
   std::vector<std::size_t> not_written;
-  internal::find_cells_not_disks(mesh, arrangement.site_map(), n, not_written);
+  arrangement.cells_not_disks(n, not_written);
   std::vector<std::uint8_t> is_face(n, 1);
   for(std::size_t s : not_written) is_face[s] = 0;
   auto becomes_face = [&](std::int64_t label) { return label >= 0 && is_face[std::size_t(label)] != 0; };

@@ -96,18 +96,10 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
               if(q > p) adjacent(p, q, e);
             }
         };
-        if(local >= 0)
-        {
-          const std::size_t g = mesh.neighbors[f][local];
-          if(g != Indexed_mesh<TriangleMesh>::none)
-            search_face(partition.face_begin[g], partition.face_begin[g + 1], mesh.edges[f][local]);
-          if(found) continue;
-        }
-        else
-        {
-          search_face(partition.face_begin[f], partition.face_begin[f + 1], no_site);
-          if(found) continue;
-        }
+        // (a search once the piece is found does nothing)
+        if(local >= 0 && mesh.neighbors[f][local] != Indexed_mesh<TriangleMesh>::none)
+          search_face(partition.face_begin[mesh.neighbors[f][local]], partition.face_begin[mesh.neighbors[f][local] + 1],
+                      mesh.edges[f][local]);
         search_face(partition.face_begin[f], partition.face_begin[f + 1], no_site);
         for(int k = 0; k < 3 && !found; ++k)
         {
@@ -118,12 +110,6 @@ void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Part
       }
     }
   }
-}
-
-template <class TriangleMesh, class Callback>
-void for_each_piece_adjacency(const Indexed_mesh<TriangleMesh>& mesh, const Partition& partition, Callback adjacent)
-{
-  for_each_piece_adjacency(mesh, partition, 0, mesh.number_of_faces(), adjacent);
 }
 
 struct Cell_components

@@ -32,7 +32,6 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -40,9 +39,39 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-// Cells not closed disks: find_cells_not_disks(). Two cells share several arcs when the
-// bisector edges between them form several components; three cells meet several times when
-// several Voronoi vertices (inside the surface, exactly three cells around) have them.
+// The number of connected components of the graph whose edges are `edges` (pairs of vertex
+// ids), and whether none of its vertices has more than two edges.
+inline std::pair<std::size_t, bool> components_of_edges(const std::vector<std::pair<std::size_t, std::size_t> >& edges)
+{
+  std::vector<std::size_t> ends;
+  for(const auto& e : edges)
+  {
+    ends.push_back(e.first);
+    ends.push_back(e.second);
+  }
+  std::sort(ends.begin(), ends.end());
+  bool degree_ok = true;
+  for(std::size_t k = 0; k + 2 < ends.size() && degree_ok; ++k) degree_ok = (ends[k] != ends[k + 2]);
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  auto index = [&](std::size_t v) { return std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
+  Disjoint_sets parts(ends.size());
+  std::size_t components = ends.size();
+  for(const auto& e : edges)
+  {
+    const std::size_t a = parts.find(index(e.first)), b = parts.find(index(e.second));
+    if(a != b)
+    {
+      parts.link(a, b);
+      --components;
+    }
+  }
+  return { components, degree_ok };
+}
+
+// Cells not closed disks: Labelled_arrangement::cells_not_disks(). Two cells share several
+// arcs when the bisector edges between them form several components; three cells meet several
+// times when several Voronoi vertices (inside the surface, exactly three cells around) have
+// them.
 template <class Diagram>
 void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& cells_not_disks,
                             std::vector<std::pair<std::size_t, std::size_t> >& pairs_in_several_arcs,
@@ -58,17 +87,17 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   const std::int64_t border = Labelled_arrangement::border;
   auto label = [&](Halfedge h) { return labelled.label(h); };
 
-  find_cells_not_disks(arrangement, labelled.site_map(), n, cells_not_disks);
+  labelled.cells_not_disks(n, cells_not_disks);
 
-  // edges between two cells: an arc's piece
-  std::vector<std::tuple<std::size_t, std::size_t, std::size_t, std::size_t> > bisector_edges;
+  // edges between two cells (the lower first), each an arc's piece (from vertex to vertex)
+  typedef std::pair<std::size_t, std::size_t> Pair;
+  std::vector<std::pair<Pair, Pair> > bisector_edges;
   for(Mesh::Edge_index e : arrangement.edges())
   {
     const Halfedge h = arrangement.halfedge(e), o = arrangement.opposite(h);
     const std::int64_t a = label(h), b = label(o);
     if(a >= 0 && b >= 0 && a != b)
-      bisector_edges.emplace_back(std::size_t((std::min)(a, b)), std::size_t((std::max)(a, b)),
-                                  std::size_t(arrangement.source(h)), std::size_t(arrangement.target(h)));
+      bisector_edges.emplace_back(Pair((std::min)(a, b), (std::max)(a, b)), Pair(arrangement.source(h), arrangement.target(h)));
   }
 
   // Voronoi vertices
@@ -113,31 +142,14 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   // the arcs between two cells: components of their bisector edges, joined at vertices
   std::sort(bisector_edges.begin(), bisector_edges.end());
   pairs_in_several_arcs.clear();
-  std::vector<std::size_t> ends;
+  std::vector<Pair> arc;
   for(std::size_t begin = 0; begin < bisector_edges.size();)
   {
     std::size_t end = begin;
-    while(end < bisector_edges.size() && std::get<0>(bisector_edges[end]) == std::get<0>(bisector_edges[begin])
-          && std::get<1>(bisector_edges[end]) == std::get<1>(bisector_edges[begin]))
-      ++end;
-    ends.clear();
-    for(std::size_t k = begin; k < end; ++k)
-    {
-      ends.push_back(std::get<2>(bisector_edges[k]));
-      ends.push_back(std::get<3>(bisector_edges[k]));
-    }
-    std::sort(ends.begin(), ends.end());
-    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    auto index = [&](std::size_t v) { return std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
-    Disjoint_sets arcs(ends.size());
-    std::size_t components = ends.size();
-    for(std::size_t k = begin; k < end; ++k)
-    {
-      const std::size_t a = arcs.find(index(std::get<2>(bisector_edges[k]))), b = arcs.find(index(std::get<3>(bisector_edges[k])));
-      if(a != b) { arcs.link(a, b); --components; }
-    }
-    if(components > 1)
-      pairs_in_several_arcs.emplace_back(std::get<0>(bisector_edges[begin]), std::get<1>(bisector_edges[begin]));
+    arc.clear();
+    for(; end < bisector_edges.size() && bisector_edges[end].first == bisector_edges[begin].first; ++end)
+      arc.push_back(bisector_edges[end].second);
+    if(components_of_edges(arc).first > 1) pairs_in_several_arcs.push_back(bisector_edges[begin].first);
     begin = end;
   }
 
@@ -186,25 +198,11 @@ inline std::size_t number_of_non_manifold_soup_vertices(std::size_t n, const std
     for(int k = 0; k < 3; ++k) link[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
   }
   std::size_t bad = 0;
-  std::vector<std::size_t> ends;
   for(std::size_t v = 0; v < n; ++v)
   {
     if(link[v].empty()) continue;
-    ends.clear();
-    for(const auto& e : link[v]) { ends.push_back(e.first); ends.push_back(e.second); }
-    std::sort(ends.begin(), ends.end());
-    bool degree_ok = true;
-    for(std::size_t k = 0; k + 2 < ends.size() && degree_ok; ++k) degree_ok = (ends[k] != ends[k + 2]);   // at most two edges at a link vertex
-    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-    Disjoint_sets parts(ends.size());
-    std::size_t components = ends.size();
-    for(const auto& e : link[v])
-    {
-      const std::size_t a = parts.find(std::size_t(std::lower_bound(ends.begin(), ends.end(), e.first) - ends.begin()));
-      const std::size_t b = parts.find(std::size_t(std::lower_bound(ends.begin(), ends.end(), e.second) - ends.begin()));
-      if(a != b) { parts.link(a, b); --components; }
-    }
-    if(!degree_ok || components != 1) ++bad;
+    const std::pair<std::size_t, bool> parts = components_of_edges(link[v]);
+    if(!parts.second || parts.first != 1) ++bad;
   }
   return bad;
 }

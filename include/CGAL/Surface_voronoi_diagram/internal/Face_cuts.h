@@ -29,6 +29,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/range/iterator_range.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -63,29 +65,12 @@ class Face_cuts
   };
 
 public:
-  /// a run of elements of one of the arrays
-  template <class T>
-  class Span
-  {
-  public:
-    Span(const T* b, std::size_t n) : m_begin(b), m_size(n) {}
-    std::size_t size() const { return m_size; }
-    bool empty() const { return m_size == 0; }
-    const T& operator[](std::size_t i) const { return m_begin[i]; }
-    const T* begin() const { return m_begin; }
-    const T* end() const { return m_begin + m_size; }
-
-  private:
-    const T* m_begin;
-    std::size_t m_size;
-  };
-
   /// a piece as `Symbolic_piece` has it
   struct Piece
   {
     std::uint32_t candidate;
-    Span<Symbolic_vertex> vertices;
-    Span<Piece_edge_support> supports;
+    boost::iterator_range<const Symbolic_vertex*> vertices;      // runs of the chunk's arrays
+    boost::iterator_range<const Piece_edge_support*> supports;
   };
 
   /// the pieces of one face
@@ -254,8 +239,10 @@ private:
   static Piece piece(const Chunk& chunk, std::size_t p)
   {
     const Piece_record& r = chunk.pieces[p];
-    return Piece{ r.candidate, Span<Symbolic_vertex>(chunk.vertices.data() + r.first_vertex, r.number_of_vertices),
-                  Span<Piece_edge_support>(chunk.supports.data() + r.first_vertex, r.number_of_vertices) };
+    const Symbolic_vertex* vertices = chunk.vertices.data() + r.first_vertex;
+    const Piece_edge_support* supports = chunk.supports.data() + r.first_vertex;
+    return Piece{ r.candidate, boost::make_iterator_range(vertices, vertices + r.number_of_vertices),
+                  boost::make_iterator_range(supports, supports + r.number_of_vertices) };
   }
 
   std::vector<Face_record> m_faces;

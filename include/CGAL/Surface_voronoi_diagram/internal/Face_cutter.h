@@ -128,17 +128,6 @@ public:
   {
     result.clear();
     const std::uint32_t n = static_cast<std::uint32_t>(m_candidates.size());
-    if(n == 1)
-    {
-      // most faces: one candidate owns the whole triangle
-      result.pieces.resize(1);
-      Symbolic_piece& piece = result.pieces.back();
-      piece.candidate = 0;
-      piece.vertices = { Symbolic_vertex{ Symbolic_vertex::CORNER, 0, 0, 0 }, Symbolic_vertex{ Symbolic_vertex::CORNER, 1, 0, 0 },
-                         Symbolic_vertex{ Symbolic_vertex::CORNER, 2, 0, 0 } };
-      piece.supports = { Piece_edge_support{ true, 0, 0 }, Piece_edge_support{ true, 1, 0 }, Piece_edge_support{ true, 2, 0 } };
-      return;
-    }
     // Built in place: a piece holds its vertices inline, so moving one copies them. No
     // reallocation moves them either, since there is at most one piece per candidate.
     result.pieces.reserve(n);

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/Bbox_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -332,13 +333,9 @@ private:
   void compute_bbox()
   {
     if(points.empty()) return;
-    Point_d lo = points.front(), hi = points.front();
-    double l[3] = { lo[0], lo[1], lo[2] }, u[3] = { hi[0], hi[1], hi[2] };
-    for(const Point_d& p : points)
-      for(int c = 0; c < 3; ++c) { l[c] = (std::min)(l[c], p[c]); u[c] = (std::max)(u[c], p[c]); }
-    double s = 0;
-    for(int c = 0; c < 3; ++c) s += (u[c] - l[c]) * (u[c] - l[c]);
-    bbox_diagonal = std::sqrt(s);
+    const Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+    bbox_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                              + CGAL::square(box.zmax() - box.zmin()));
   }
 };
 

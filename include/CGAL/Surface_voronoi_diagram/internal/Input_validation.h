@@ -217,37 +217,30 @@ std::vector<std::pair<std::size_t, std::size_t> > find_coincident_sites(const In
 
 // A weight map is keyed either by the sites as the range holds them, or by site index.
 template <class Map, class Site_description>
-double site_weight(const Map& map, const Site_description&, std::size_t index, std::true_type)
-{
-  return static_cast<double>(get(map, static_cast<typename boost::property_traits<Map>::key_type>(index)));
-}
-template <class Map, class Site_description>
-double site_weight(const Map& map, const Site_description& site, std::size_t, std::false_type)
-{
-  return static_cast<double>(get(map, site));
-}
-template <class Map, class Site_description>
 double site_weight(const Map& map, const Site_description& site, std::size_t index)
 {
   typedef typename boost::property_traits<Map>::key_type Key;
-  return site_weight(map, site, index, std::integral_constant<bool, std::is_integral<Key>::value
-                                                                    && !std::is_integral<Site_description>::value>());
+  if constexpr(std::is_integral<Key>::value && !std::is_integral<Site_description>::value)
+    return static_cast<double>(get(map, static_cast<Key>(index)));
+  else
+    return static_cast<double>(get(map, site));
 }
 
 template <class SiteRange, class NamedParameters>
-void check_weights(const SiteRange& sites, const NamedParameters& np, Problem_list& list, std::true_type)
+void check_weights(const SiteRange& sites, const NamedParameters& np, Problem_list& list)
 {
-  const auto& map = CGAL::parameters::get_parameter(np, internal_np::site_weight_map);
-  std::size_t index = 0;
-  for(const auto& s : sites)
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::site_weight_map_t>::value)
   {
-    if(!std::isfinite(site_weight(map, s, index)))
-      list.add(Input_problem::NON_FINITE_WEIGHT, index, "the weight of site " + std::to_string(index) + " is not finite");
-    ++index;
+    const auto& map = CGAL::parameters::get_parameter(np, internal_np::site_weight_map);
+    std::size_t index = 0;
+    for(const auto& s : sites)
+    {
+      if(!std::isfinite(site_weight(map, s, index)))
+        list.add(Input_problem::NON_FINITE_WEIGHT, index, "the weight of site " + std::to_string(index) + " is not finite");
+      ++index;
+    }
   }
 }
-template <class SiteRange, class NamedParameters>
-void check_weights(const SiteRange&, const NamedParameters&, Problem_list&, std::false_type) {}
 
 } // namespace internal
 } // namespace Surface_voronoi

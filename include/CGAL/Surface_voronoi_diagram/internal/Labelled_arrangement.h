@@ -69,8 +69,6 @@ public:
   Labelled_arrangement& operator=(const Labelled_arrangement&) = delete;
 
   const Mesh& mesh() const { return m_mesh; }
-  std::int64_t site(Face f) const { return m_site[f]; }
-  const Mesh::Property_map<Face, std::int64_t>& site_map() const { return m_site; }
   std::int64_t label(Halfedge h) const { return m_mesh.is_border(h) ? border : m_site[m_mesh.face(h)]; }
   // a halfedge on the boundary of its face's region (cell, unreached area)
   bool is_region_boundary(Halfedge h) const { return label(h) != label(m_mesh.opposite(h)); }
@@ -104,77 +102,69 @@ public:
     return g;
   }
 
+  // A cell is a closed disk when it is one piece, touches itself at no vertex (its faces
+  // around each vertex are one run) and has Euler characteristic V - E + F = 1 (a connected
+  // surface of genus g with b boundary loops has 2 - 2g - b). Writes the sites (of `n`) of
+  // the other cells, empty ones included, ascending.
+  void cells_not_disks(std::size_t n, std::vector<std::size_t>& out) const
+  {
+    std::vector<long> euler(n, 0);
+    std::vector<std::uint8_t> not_disk(n, 0), has_face(n, 0);
+    Disjoint_sets pieces(m_mesh.number_of_faces());
+    for(Face f : m_mesh.faces())
+      if(m_site[f] >= 0)
+      {
+        ++euler[std::size_t(m_site[f])];
+        has_face[std::size_t(m_site[f])] = 1;
+      }
+
+    // edges: once for each cell beside them
+    for(Mesh::Edge_index e : m_mesh.edges())
+    {
+      const Halfedge h = m_mesh.halfedge(e), o = m_mesh.opposite(h);
+      const std::int64_t a = label(h), b = label(o);
+      if(a >= 0) --euler[std::size_t(a)];
+      if(b >= 0 && b != a) --euler[std::size_t(b)];
+      if(a >= 0 && a == b)
+        pieces.unite(std::size_t(m_mesh.face(h)), std::size_t(m_mesh.face(o)));
+    }
+
+    // vertices: once for each cell around them; a cell in several runs around one touches itself
+    std::vector<std::int64_t> ring;
+    for(Vertex v : m_mesh.vertices())
+    {
+      if(m_mesh.is_isolated(v)) continue;
+      labels_around(v, ring);
+      for(std::size_t k = 0; k < ring.size(); ++k)
+      {
+        const std::int64_t s = ring[k];
+        if(s < 0 || std::find(ring.begin(), ring.begin() + k, s) != ring.begin() + k) continue;   // once per cell
+        ++euler[std::size_t(s)];
+        std::size_t runs = 0;
+        for(std::size_t j = 0; j < ring.size(); ++j)
+          runs += (ring[j] == s && ring[(j + ring.size() - 1) % ring.size()] != s);
+        if(runs > 1) not_disk[std::size_t(s)] = 1;
+      }
+    }
+
+    // the cells' pieces, through the edges with the cell on both sides
+    std::vector<std::size_t> first_root(n, std::size_t(-1));
+    for(Face f : m_mesh.faces())
+    {
+      if(m_site[f] < 0) continue;
+      const std::size_t s = std::size_t(m_site[f]), root = pieces.find(std::size_t(f));
+      if(first_root[s] == std::size_t(-1)) first_root[s] = root;
+      else if(first_root[s] != root) not_disk[s] = 1;
+    }
+    out.clear();
+    for(std::size_t s = 0; s < n; ++s)
+      if(!has_face[s] || not_disk[s] || euler[s] != 1) out.push_back(s);
+  }
+
 private:
   Mesh m_mesh;
   Mesh::Property_map<Face, std::int64_t> m_site;
 };
-
-// A cell is a closed disk when it is one piece, touches itself at no vertex (its faces around
-// each vertex are one run) and has Euler characteristic V - E + F = 1 (a connected surface of
-// genus g with b boundary loops has 2 - 2g - b). Writes the sites of the other cells, empty
-// ones included, ascending.
-template <class SiteMap>
-void find_cells_not_disks(const CGAL::Surface_mesh<Point_d>& arrangement, const SiteMap& site, std::size_t n,
-                          std::vector<std::size_t>& cells_not_disks)
-{
-  typedef CGAL::Surface_mesh<Point_d> Mesh;
-  typedef Mesh::Halfedge_index Halfedge;
-  const std::int64_t border = Labelled_arrangement::border;
-  auto label = [&](Halfedge h) { return arrangement.is_border(h) ? border : std::int64_t(site[arrangement.face(h)]); };
-
-  std::vector<long> euler(n, 0);
-  std::vector<std::uint8_t> not_disk(n, 0), has_face(n, 0);
-  Disjoint_sets pieces(arrangement.number_of_faces());
-  for(Mesh::Face_index f : arrangement.faces())
-    if(site[f] >= 0)
-    {
-      ++euler[std::size_t(site[f])];
-      has_face[std::size_t(site[f])] = 1;
-    }
-
-  // edges: once for each cell beside them
-  for(Mesh::Edge_index e : arrangement.edges())
-  {
-    const Halfedge h = arrangement.halfedge(e), o = arrangement.opposite(h);
-    const std::int64_t a = label(h), b = label(o);
-    if(a >= 0) --euler[std::size_t(a)];
-    if(b >= 0 && b != a) --euler[std::size_t(b)];
-    if(a >= 0 && a == b)
-      pieces.unite(std::size_t(arrangement.face(h)), std::size_t(arrangement.face(o)));
-  }
-
-  // vertices: once for each cell around them; a cell in several runs around one touches itself
-  std::vector<std::int64_t> ring;
-  for(Mesh::Vertex_index v : arrangement.vertices())
-  {
-    if(arrangement.is_isolated(v)) continue;
-    ring.clear();
-    for(Halfedge h : CGAL::halfedges_around_target(v, arrangement)) ring.push_back(label(h));
-    for(std::size_t k = 0; k < ring.size(); ++k)
-    {
-      const std::int64_t s = ring[k];
-      if(s < 0 || std::find(ring.begin(), ring.begin() + k, s) != ring.begin() + k) continue;   // once per cell
-      ++euler[std::size_t(s)];
-      std::size_t runs = 0;
-      for(std::size_t j = 0; j < ring.size(); ++j)
-        runs += (ring[j] == s && ring[(j + ring.size() - 1) % ring.size()] != s);
-      if(runs > 1) not_disk[std::size_t(s)] = 1;
-    }
-  }
-
-  // the cells' pieces, through the edges with the cell on both sides
-  std::vector<std::size_t> first_root(n, std::size_t(-1));
-  for(Mesh::Face_index f : arrangement.faces())
-  {
-    if(site[f] < 0) continue;
-    const std::size_t s = std::size_t(site[f]), root = pieces.find(std::size_t(f));
-    if(first_root[s] == std::size_t(-1)) first_root[s] = root;
-    else if(first_root[s] != root) not_disk[s] = 1;
-  }
-  cells_not_disks.clear();
-  for(std::size_t s = 0; s < n; ++s)
-    if(!has_face[s] || not_disk[s] || euler[s] != 1) cells_not_disks.push_back(s);
-}
 
 } // namespace internal
 } // namespace Surface_voronoi

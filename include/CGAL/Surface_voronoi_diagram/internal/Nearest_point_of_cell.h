@@ -24,6 +24,7 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -111,31 +112,9 @@ public:
 private:
   static double squared_length(const Vector_d& v) { return v * v; }
 
-  // The squared distance from q to face f's nearest point, found by the Voronoi regions of
-  // the triangle's corners, edges and interior (Ericson, Real-Time Collision Detection, 5.1.5).
   double squared_distance_to_face(const Point_d& q, std::size_t f) const
   {
-    const Point_d& a = m_mesh.corner(f, 0);
-    const Point_d& b = m_mesh.corner(f, 1);
-    const Point_d& c = m_mesh.corner(f, 2);
-    const Vector_d ab = b - a, ac = c - a, ap = q - a;
-    const double d1 = ab * ap, d2 = ac * ap;
-    if(d1 <= 0 && d2 <= 0) return squared_length(ap);
-    const Vector_d bp = q - b;
-    const double d3 = ab * bp, d4 = ac * bp;
-    if(d3 >= 0 && d4 <= d3) return squared_length(bp);
-    const double vc = d1 * d4 - d3 * d2;
-    if(vc <= 0 && d1 >= 0 && d3 <= 0) return squared_length(ap - (d1 / (d1 - d3)) * ab);
-    const Vector_d cp = q - c;
-    const double d5 = ab * cp, d6 = ac * cp;
-    if(d6 >= 0 && d5 <= d6) return squared_length(cp);
-    const double vb = d5 * d2 - d1 * d6;
-    if(vb <= 0 && d2 >= 0 && d6 <= 0) return squared_length(ap - (d2 / (d2 - d6)) * ac);
-    const double va = d3 * d6 - d5 * d4;
-    if(va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return squared_length(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
-    const double sum = va + vb + vc;
-    if(!(sum > 0)) return (std::min)((std::min)(squared_length(ap), squared_length(bp)), squared_length(cp));   // no area
-    return squared_length(ap - (vb / sum) * ab - (vc / sum) * ac);
+    return CGAL::squared_distance(q, Double_kernel::Triangle_3(m_mesh.corner(f, 0), m_mesh.corner(f, 1), m_mesh.corner(f, 2)));
   }
 
   Point_3 project(const Point_3& p, std::size_t f) const

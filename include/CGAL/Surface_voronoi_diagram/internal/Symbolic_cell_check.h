@@ -349,13 +349,6 @@ private:
     bool operator<(const Piece_ref& o) const { return face < o.face || (face == o.face && local < o.local); }
   };
 
-  // The number of pieces of face f's cut (a face nobody reached has none here).
-  std::size_t pieces_in_face(std::size_t f) const
-  {
-    if(m_candidates[f].empty()) return 0;
-    return m_cuts[f].whole_face ? 1 : m_cuts[f].pieces.size();
-  }
-
   const Candidate& candidate_of(std::size_t f, std::size_t local) const
   {
     const Face_cuts::Cut cut = m_cuts[f];

@@ -25,23 +25,14 @@ namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
 
-template <class NamedParameters>
-std::function<bool(double)> callback_of(const NamedParameters& np, std::true_type)
-{
-  return CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
-}
-template <class NamedParameters>
-std::function<bool(double)> callback_of(const NamedParameters&, std::false_type)
-{
-  return std::function<bool(double)>();
-}
-
 /// the callable `bool(double)` given as `callback`, or an empty function
 template <class NamedParameters>
 std::function<bool(double)> callback_of(const NamedParameters& np)
 {
-  return callback_of(np, std::integral_constant<bool,
-      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value>());
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::callback_t>::value)
+    return std::function<bool(double)>();
+  else
+    return CGAL::parameters::get_parameter(np, CGAL::internal_np::callback);
 }
 
 } // namespace internal

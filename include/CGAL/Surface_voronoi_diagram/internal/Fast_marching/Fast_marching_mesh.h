@@ -164,12 +164,7 @@ private:
       const bool right_of_b = pd.x() * pb.x() + pd.y() * pb.y() >= 0;
       if(right_of_a && right_of_b)
       {
-        split.face = static_cast<std::uint32_t>(f);
-        split.corner = static_cast<std::uint32_t>(k);
-        split.vertex = d;
-        split.a = pa;
-        split.b = pb;
-        split.d = pd;
+        split = Split{ static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(k), d, pa, pb, pd };
         return true;
       }
       if(!right_of_b) { qa = pd; ea = d; }   // the cone lies between d and b

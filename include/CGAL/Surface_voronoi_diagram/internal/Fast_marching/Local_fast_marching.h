@@ -35,13 +35,12 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <memory>
-#include <thread>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -67,7 +66,7 @@ public:
   /// a copy of the fronts, with locks of its own
   Local_fast_marching(const Local_fast_marching& other)
     : m_marching(other.m_marching), m_mesh(other.m_mesh), m_seeds(other.m_seeds), m_fronts(other.m_fronts),
-      m_locks(new Front_lock[other.m_seeds.size()]), m_forgotten_accepted(other.m_forgotten_accepted)
+      m_locks(new std::mutex[other.m_seeds.size()]), m_forgotten_accepted(other.m_forgotten_accepted)
   {}
   Local_fast_marching& operator=(const Local_fast_marching&) = delete;
 
@@ -75,7 +74,7 @@ public:
   {
     m_seeds = seeds;
     m_fronts.assign(seeds.size(), Front());
-    m_locks.reset(new Front_lock[seeds.size()]);
+    m_locks.reset(new std::mutex[seeds.size()]);
     m_forgotten_accepted = 0;
   }
 
@@ -103,7 +102,7 @@ public:
   /// Threads may ask at once.
   double distance(std::size_t i, std::uint32_t v)
   {
-    const Lock_guard guard(m_locks[i]);
+    const std::lock_guard<std::mutex> guard(m_locks[i]);
     Front& front = m_fronts[i];
     if(const Slot* s = front.values.find(v))
       if(s->accepted()) return s->value();
@@ -139,24 +138,6 @@ public:
   }
 
 private:
-  // A spin lock: a front is locked for a few microseconds, and rarely by two threads at once.
-  struct Front_lock
-  {
-    std::atomic<bool> taken{ false };
-  };
-  struct Lock_guard
-  {
-    explicit Lock_guard(Front_lock& l) : lock(l)
-    {
-      while(lock.taken.exchange(true, std::memory_order_acquire))
-        while(lock.taken.load(std::memory_order_relaxed)) std::this_thread::yield();
-    }
-    ~Lock_guard() { lock.taken.store(false, std::memory_order_release); }
-    Lock_guard(const Lock_guard&) = delete;
-    Lock_guard& operator=(const Lock_guard&) = delete;
-    Front_lock& lock;
-  };
-
   // A vertex's value in a front, 12 bytes where a bool beside a double would take 16: the
   // double is kept in two 4-byte words, and negated once the vertex is accepted (values are
   // never negative; the sign bit of 0 is kept as well).
@@ -169,7 +150,6 @@ private:
     void store(double v) { std::memcpy(bits, &v, sizeof v); }
     bool accepted() const { return std::signbit(stored()); }
     double value() const { return std::fabs(stored()); }
-    void set_tentative(double v) { store(v); }
     void accept() { store(-value()); }
   };
   static_assert(sizeof(double) == 2 * sizeof(std::uint32_t), "a double is kept in two 32-bit words");
@@ -197,7 +177,7 @@ private:
     {
       Slot fresh;
       fresh.key = v;
-      fresh.set_tentative(std::numeric_limits<double>::infinity());
+      fresh.store(std::numeric_limits<double>::infinity());
       return *values.insert(v, fresh).first;
     }
   };
@@ -212,7 +192,7 @@ private:
   static void lower(Front& front, Slot& s, double value)
   {
     if(!(value < s.value())) return;
-    s.set_tentative(value);
+    s.store(value);
     front.heap.push_back(Heap_item{ value, s.key });
     std::push_heap(front.heap.begin(), front.heap.end());
   }
@@ -314,7 +294,7 @@ private:
   const Indexed_mesh<TriangleMesh>& m_mesh;
   std::vector<Marching_seed> m_seeds;
   std::vector<Front> m_fronts;
-  std::unique_ptr<Front_lock[]> m_locks;      // one a front
+  std::unique_ptr<std::mutex[]> m_locks;      // one a front
   std::size_t m_forgotten_accepted = 0;      // by the fronts freed since set_seeds()
 };
 
