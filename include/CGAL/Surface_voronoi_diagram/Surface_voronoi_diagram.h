@@ -521,12 +521,15 @@ private:
       settings.previous = previous.get();
     if(callback && !callback(0.05)) { cancel(); return; }
     // the fields over the embedding's values, stored for the queries, or over the lazy metric;
-    // the restricted Voronoi diagram's search is compiled only where a candidate selection is given
+    // the restricted Voronoi diagram's search, and Lloyd's warm start and cells-only diagrams,
+    // are compiled only where the named parameters asking for them are given
     constexpr bool may_select_globally = !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value;
+    constexpr bool for_relaxation = !is_default_parameter<NamedParameters, SVnp::cells_only_t>::value
+                                    || !is_default_parameter<NamedParameters, SVnp::previous_candidates_t>::value;
     auto build = [&](const auto& fields) {
       timer.stop("setup");
-      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, may_select_globally> builder(m_data, fields, settings,
-                                                                                                      callback, times);
+      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, may_select_globally, for_relaxation>
+          builder(m_data, fields, settings, callback, times);
       if(!builder.run()) cancel();
     };
     if constexpr(SVi::Is_embedding<Metric>::value)

@@ -52,9 +52,10 @@ struct Builder_settings
   const Candidate_sites* previous = nullptr;   // Lloyd's: the candidates before the sites moved (embedding metrics)
 };
 
-// `MaySelectGlobally`: whether the caller may ask for GLOBAL_NEAREST candidates; without it,
-// the restricted Voronoi diagram's search is not compiled in.
-template <class TriangleMesh, class Fields, bool MaySelectGlobally = true>
+// `MaySelectGlobally`: whether the caller may ask for GLOBAL_NEAREST candidates;
+// `ForRelaxation`: whether it may ask for Lloyd's warm start and cells-only diagrams. Without
+// them, the paths they take are not compiled in.
+template <class TriangleMesh, class Fields, bool MaySelectGlobally = true, bool ForRelaxation = true>
 class Diagram_builder
 {
 public:
@@ -91,9 +92,7 @@ public:
       propagation.set_block_sizes(Field_propagation::faces_per_block / 4, Field_propagation::sites_per_block);
     if(global_nearest)
       find_global_nearest(propagation.candidates);
-    else if(m_settings.previous && std::is_same<Fields, Embedding_values>::value)
-      propagation.run_from(*m_settings.previous);
-    else
+    else if(!start_from_previous(propagation))
       propagation.run();
     m_fields.propagation_done();
     m_timer.stop("propagation");
@@ -162,18 +161,10 @@ public:
       }
     }
     m_timer.stop("repair");
-    if(m_settings.cells_only && decided_on_cuts)
+    if constexpr(ForRelaxation)
     {
-      // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of
-      // the cells are taken on them, without a partition
-      d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, propagation.candidates, m_cuts, d.sites, embedding_of(m_fields),
-                                                   d.centroid_density.get()).run();
-      d.statistics.broken_cells = 0;
-      d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
-      summarize_candidates();
-      summarize(regions_of_site);
-      m_timer.stop("cutting");
-      return progress(1.);
+      if(m_settings.cells_only && decided_on_cuts)
+        return measure_on_cuts(propagation.candidates, regions_of_site);
     }
     propagation.release_working_state();   // a repair after stitching builds it again
     // packed for stitching, where the memory peaks; a repair after it unpacks them
@@ -224,6 +215,34 @@ private:
   static const Embedding_values* embedding_of(const Lazy&) { return nullptr; }
 
   bool progress(double fraction) const { return !m_callback || m_callback(fraction); }
+
+  // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of the
+  // cells are taken on them, without a partition
+  bool measure_on_cuts(Candidate_lists& candidates, const std::vector<std::size_t>& regions_of_site)
+  {
+    Diagram_data<TriangleMesh>& d = m_data;
+    d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, candidates, m_cuts, d.sites, embedding_of(m_fields),
+                                                 d.centroid_density.get()).run();
+    d.statistics.broken_cells = 0;
+    d.candidates = Candidate_table(std::move(candidates), m_settings.parallel);
+    summarize_candidates();
+    summarize(regions_of_site);
+    m_timer.stop("cutting");
+    return progress(1.);
+  }
+
+  // Lloyd's diagrams over an embedding start from the candidates before the sites moved
+  template <class Field_propagation>
+  bool start_from_previous(Field_propagation& propagation) const
+  {
+    if constexpr(ForRelaxation && std::is_same<Fields, Embedding_values>::value)
+      if(m_settings.previous)
+      {
+        propagation.run_from(*m_settings.previous);
+        return true;
+      }
+    return false;
+  }
 
   bool use_global_nearest() const
   {
