@@ -83,13 +83,15 @@ def run_once(program, mesh, args, work):
     return stats
 
 
-# extra arguments of the new program (--threads), set from the command line
+# extra arguments of both programs (--threads), set from the command line: the base runs on
+# as many threads as the new program, since both default to all cores
 NEW_ARGS = []
 
 
-def compare(new, old, mesh, args, repeat, work, new_args=None, old_args=()):
+def compare(new, old, mesh, args, repeat, work, new_args=None, old_args=None):
     runs = {"new": [], "old": []}
     new_args = NEW_ARGS if new_args is None else new_args
+    old_args = NEW_ARGS if old_args is None else old_args
     for _ in range(repeat):
         runs["new"].append(run_once(new, mesh, args + list(new_args), work))
         runs["old"].append(run_once(old, mesh, args + list(old_args), work))
@@ -134,7 +136,7 @@ def main():
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--sections", default="diagram,sites,meshes,lloyd,biharmonic,geodesic,threads")
     p.add_argument("--new-threads", type=int, default=1,
-                   help="--threads for the new program in the comparisons with the base (default 1: the goals are single-threaded)")
+                   help="--threads for both programs in the comparisons with the base (default 1: the goals are single-threaded)")
     p.add_argument("--out", default=os.path.join(HERE, "results", "compare_with_base.md"),
                    help="markdown report (default: results/compare_with_base.md beside this script; '-': print only)")
     p.add_argument("--quick", action="store_true", help="boot only, one repetition")
@@ -153,7 +155,7 @@ def main():
     big = [] if a.quick else ["igea-537k", "igea-2M"]
     paths = meshes(a.data, a.work, big)
     report = ["# Comparison with the base program", "",
-              "new: `%s --threads %d`, old: `%s`; %d interleaved run(s) each, medians; load average before: %s" % (
+              "new: `%s --threads %d`, old: `%s` (the same threads); %d interleaved run(s) each, medians; load average before: %s" % (
                   a.program, a.new_threads, a.base_program, repeat, " ".join("%.2f" % x for x in os.getloadavg())), ""]
 
     def section(title, rows, keys):
