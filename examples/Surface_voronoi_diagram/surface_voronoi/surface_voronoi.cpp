@@ -332,7 +332,7 @@ private:
 //    given in the lowest-index face holding it. The written point locates back to
 //    coordinates within rounding (some 1e-15) of the grid values, which are recognized
 //    (within 2^-44) and snapped back. A site moves by at most 2^-25 of its face.
-// Neither needs an AABB tree: only points read from a file are searched for globally.
+// Neither needs a search of the surface: only points read from a file are searched for globally.
 const double site_grid_step = std::ldexp(1., -24);
 const double site_grid_tolerance = std::ldexp(1., -44);
 const double site_interior = std::ldexp(1., -20);
@@ -352,12 +352,12 @@ bool is_inside_face(const Location& l)
 }
 
 // The face nearest to p among `start` and the faces sharing a vertex with it (the lowest
-// index on a tie), and the location there of p's nearest point: the AABB tree's answer for
-// points next to `start`, computed alike (the same triangles, the same projection).
+// index on a tie), and the location there of p's nearest point.
 Location locate_near(const Point& p, Mesh::Face_index start, const Mesh& mesh)
 {
   const K k;
-  // corners in the order of the AABB tree's triangles, so that projections round alike
+  // corners in the order of CGAL's AABB face-graph primitives, which located the sites first
+  // once: the sites files written then are read back bit for bit
   const auto triangle = [&](Mesh::Face_index f) {
     const Mesh::Halfedge_index h = mesh.halfedge(f);
     return K::Triangle_3(mesh.point(mesh.target(h)), mesh.point(mesh.target(mesh.next(h))), mesh.point(mesh.source(h)));
@@ -659,19 +659,16 @@ int run_main(int argc, char** argv)
               + std::to_string(max_sites));
     const double limit = args.max_site_distance * diagonal;
     // only points read from a file need a search over the whole surface
-    typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-    Tree tree;
-    CGAL::Polygon_mesh_processing::build_AABB_tree(mesh, tree);
-    tree.accelerate_distance_queries();
-    for(const Site_record& r : records)
+    std::vector<Point> points;
+    points.reserve(records.size());
+    for(const Site_record& r : records) points.push_back(scaled(Point(r.x, r.y, r.z), -args.scale));
+    const std::vector<Location> nearest = SV::locate_points(mesh, points);
+    for(std::size_t i = 0; i < records.size(); ++i)
     {
-      const Point p = scaled(Point(r.x, r.y, r.z), -args.scale);
+      const Site_record& r = records[i];
+      const Point& p = points[i];
       Point q = p;
-      const auto nearest = tree.closest_point_and_primitive(p);
-      const Location l = canonical_location(SV::internal::locate_in_face(nearest.first, nearest.second, mesh,
-                                                                         get(CGAL::vertex_point, mesh), K()),
-                                            mesh, q);
+      const Location l = canonical_location(nearest[i], mesh, q);
       const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
       if(d > limit)
       {

@@ -21,12 +21,10 @@
 
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_grid.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh/Surface_mesh.h>
 
@@ -130,17 +128,14 @@ public:
     for(int c = 0; c < 3; ++c)
       if(!std::isfinite(p[c]))
         return "site " + std::to_string(index) + " has a non-finite coordinate";
-    if(!m_tree)
-    {
-      m_triangles.reserve(m_mesh.number_of_faces());
-      for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-        m_triangles.emplace_back(m_mesh.corner(f, 0), m_mesh.corner(f, 1), m_mesh.corner(f, 2));
-      m_tree = std::make_shared<Tree>(m_triangles.begin(), m_triangles.end());
-      m_tree->accelerate_distance_queries();
-    }
-    const auto closest = m_tree->closest_point_and_primitive(p);
-    s.face = static_cast<std::size_t>(closest.second - m_triangles.begin());
-    const Barycentric b = m_mesh.barycentric_coordinates(s.face, closest.first);
+    if(!m_grid)
+      m_grid = std::make_shared<Face_grid>(m_mesh.number_of_faces(), [this](std::size_t f, int k) { return m_mesh.corner(f, k); });
+    const Double_kernel kernel;
+    auto nearest_point = [&](std::size_t f) {
+      return kernel.construct_projected_point_3_object()(Double_kernel::Triangle_3(m_mesh.corner(f, 0), m_mesh.corner(f, 1), m_mesh.corner(f, 2)), p);
+    };
+    s.face = m_grid->nearest(p, [&](std::size_t f) { return CGAL::squared_distance(nearest_point(f), p); });
+    const Barycentric b = m_mesh.barycentric_coordinates(s.face, nearest_point(s.face));
     double sum = 0;
     for(int k = 0; k < 3; ++k) sum += (s.barycentric[k] = (std::max)(0., b[k]));
     for(int k = 0; k < 3; ++k) s.barycentric[k] /= sum;
@@ -161,17 +156,11 @@ public:
   bool last_was_too_far() const { return m_too_far; }
 
 private:
-  typedef std::vector<Double_kernel::Triangle_3>::const_iterator Triangle_iterator;
-  typedef CGAL::AABB_triangle_primitive<Double_kernel, Triangle_iterator> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Double_kernel, Primitive> > Tree;
-
   const TriangleMesh& m_tm;
   const Indexed_mesh<TriangleMesh>& m_mesh;
   double m_max_distance;
-  mutable std::vector<Double_kernel::Triangle_3> m_triangles;
-  // shared_ptr: the tree's code is instantiated only where sites are points, not with the
-  // descriptors and locations of the common case
-  mutable std::shared_ptr<Tree> m_tree;
+  // built at the first site given as a point
+  mutable std::shared_ptr<Face_grid> m_grid;
   mutable bool m_too_far = false;
   mutable double m_too_far_distance = 0;
 };
