@@ -3,6 +3,9 @@
 
 #include <test_meshes.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <limits>
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
 namespace svd_test_sampling {
@@ -210,6 +213,49 @@ TEST_CASE("sampling: a density map that is negative, not a number or zero everyw
     CHECK_THROWS_AS(SV::blue_noise_sites(m, 10, SV::parameters::vertex_density_map(density)), SV::Input_error);
     m.remove_property_map(density);
   }
+}
+
+
+TEST_CASE("sampling: locate_points() finds the nearest face a scan of every face finds", "[sampling][locate]")
+{
+  // a torus (a hole the grid must not bridge) and a plane with needle triangles, points on,
+  // near and far from the surface; the oracle projects on every face as locate_points() does
+  Mesh torus, grid;
+  GEN::make_torus(torus, 1.0, 0.3, 48, 16);
+  GEN::make_planar_grid(grid, 30, 3, 30.0, 0.01);
+  for(const Mesh* m : { &torus, &grid })
+  {
+    CGAL::Random random(7);
+    std::vector<Point> points;
+    for(const auto& l : area_uniform_locations(*m, 200, 3))
+    {
+      const Point p = point_of(l, *m);
+      const double r = (points.size() % 4 == 0) ? 0. : (points.size() % 4 == 3 ? 40. : 0.05);
+      auto jitter = [&]() { return r > 0 ? random.get_double(-r, r) : 0.; };
+      points.emplace_back(p.x() + jitter(), p.y() + jitter(), p.z() + jitter());
+    }
+    const auto located = SV::locate_points(*m, points);
+    REQUIRE(located.size() == points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      double best = std::numeric_limits<double>::infinity();
+      for(auto f : faces(*m))
+      {
+        const auto h = halfedge(f, *m);
+        const CGAL::Simple_cartesian<double>::Triangle_3 t(
+            {m->point(target(h, *m)).x(), m->point(target(h, *m)).y(), m->point(target(h, *m)).z()},
+            {m->point(target(next(h, *m), *m)).x(), m->point(target(next(h, *m), *m)).y(), m->point(target(next(h, *m), *m)).z()},
+            {m->point(source(h, *m)).x(), m->point(source(h, *m)).y(), m->point(source(h, *m)).z()});
+        const CGAL::Simple_cartesian<double>::Point_3 p(points[i].x(), points[i].y(), points[i].z());
+        best = (std::min)(best, CGAL::squared_distance(CGAL::Simple_cartesian<double>().construct_projected_point_3_object()(t, p), p));
+      }
+      const double found = CGAL::to_double(CGAL::squared_distance(point_of(located[i], *m), points[i]));
+      CHECK(std::abs(std::sqrt(found) - std::sqrt(best)) <= 1e-9 * (1 + std::sqrt(best)));
+    }
+  }
+  Mesh empty;
+  CHECK_THROWS_AS(SV::locate_points(empty, std::vector<Point>(1, Point(0, 0, 0))), SV::Input_error);
+  CHECK_THROWS_AS(SV::locate_points(torus, std::vector<Point>(1, Point(std::nan(""), 0, 0))), SV::Input_error);
 }
 
 } // namespace svd_test_sampling
