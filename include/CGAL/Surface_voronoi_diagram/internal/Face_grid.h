@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -39,44 +40,42 @@ public:
   template <class Corner>
   Face_grid(std::size_t number_of_faces, const Corner& corner) : m_faces(number_of_faces)
   {
-    if(m_faces == 0) return;
     double extent = 0;
     for(std::size_t f = 0; f < m_faces; ++f)
     {
       const Box b = box_of(f, corner);
       for(int a = 0; a < 3; ++a)
       {
-        m_low[a] = (f == 0) ? b[0][a] : (std::min)(m_low[a], b[0][a]);
-        m_high[a] = (f == 0) ? b[1][a] : (std::max)(m_high[a], b[1][a]);
+        m_low[a] = (std::min)(m_low[a], b[0][a]);
+        m_high[a] = (std::max)(m_high[a], b[1][a]);
         extent += (b[1][a] - b[0][a]) / 3;
       }
     }
-    // cells about the size of a face, but no more cells than a few per face
+    if(m_faces == 0) return;
+    // cells about the size of a face, but not more than a few per face
     const double volume = (m_high[0] - m_low[0]) * (m_high[1] - m_low[1]) * (m_high[2] - m_low[2]);
-    m_h = (std::max)(extent / double(m_faces), std::cbrt(volume / (4. * double(m_faces))));
-    if(!(m_h > 0)) m_h = (std::max)({ m_high[0] - m_low[0], m_high[1] - m_low[1], m_high[2] - m_low[2], 1. });
+    m_h = (std::max)({ extent / double(m_faces), std::cbrt(volume / (4. * double(m_faces))), 1e-300 });
     for(;; m_h *= 1.25)
     {
       double cells = 1;
-      for(int a = 0; a < 3; ++a) cells *= (m_n[a] = std::size_t((m_high[a] - m_low[a]) / m_h) + 1);
+      for(int a = 0; a < 3; ++a)
+      {
+        const double q = (m_high[a] - m_low[a]) / m_h;   // beyond doubles' range: one cell
+        cells *= double(m_n[a] = (q < 1e9) ? std::size_t(q) + 1 : 1);
+      }
       if(cells <= 4. * double(m_faces) + 64) break;
     }
-    // counting sort of the (cell, face) entries; a face over many cells is tried by every query
+    // a counting sort of the (cell, face) pairs; a face over many cells is tried by every query
     m_begin.assign(m_n[0] * m_n[1] * m_n[2] + 1, 0);
+    std::vector<std::size_t> fill;
     for(int pass = 0; pass < 2; ++pass)
     {
       for(std::size_t f = 0; f < m_faces; ++f)
       {
         const Box b = box_of(f, corner);
         std::array<std::size_t, 3> lo, hi;
-        std::size_t count = 1;
-        for(int a = 0; a < 3; ++a)
-        {
-          lo[a] = cell(b[0][a], a);
-          hi[a] = cell(b[1][a], a);
-          count *= hi[a] - lo[a] + 1;
-        }
-        if(count > 64)
+        for(int a = 0; a < 3; ++a) lo[a] = cell(b[0][a], a), hi[a] = cell(b[1][a], a);
+        if((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64)
         {
           if(pass == 0) m_large.push_back(std::uint32_t(f));
           continue;
@@ -87,22 +86,19 @@ public:
             {
               const std::size_t c = x + m_n[0] * (y + m_n[1] * z);
               if(pass == 0) ++m_begin[c + 1];
-              else m_entries[m_fill[c]++] = std::uint32_t(f);
+              else m_entries[fill[c]++] = std::uint32_t(f);
             }
       }
-      if(pass == 0)
-      {
-        for(std::size_t c = 1; c < m_begin.size(); ++c) m_begin[c] += m_begin[c - 1];
-        m_entries.resize(m_begin.back());
-        m_fill.assign(m_begin.begin(), m_begin.end() - 1);
-      }
+      if(pass == 1) break;
+      for(std::size_t c = 1; c < m_begin.size(); ++c) m_begin[c] += m_begin[c - 1];
+      m_entries.resize(m_begin.back());
+      fill.assign(m_begin.begin(), m_begin.end() - 1);
     }
-    std::vector<std::size_t>().swap(m_fill);
   }
 
   /// The face nearest to `p` by `squared_distance(f)` (the lowest index among equals), tried
-  /// ring by ring until no face outside the rings can be as near. Far from the surface the
-  /// rings grow many, and every face is tried instead.
+  /// ring of cells by ring until no face outside the rings can be as near. Far from the
+  /// surface the rings grow many, and every face is tried instead.
   template <class Squared_distance>
   std::size_t nearest(const Point_d& p, const Squared_distance& squared_distance) const
   {
@@ -110,43 +106,33 @@ public:
     double best_d2 = std::numeric_limits<double>::infinity();
     auto offer = [&](std::size_t f) {
       const double d2 = squared_distance(f);
-      if(d2 < best_d2 || (d2 == best_d2 && f < best)) { best = f; best_d2 = d2; }
+      if(d2 < best_d2 || (d2 == best_d2 && f < best)) best = f, best_d2 = d2;
     };
-    if(m_faces == 0) return best;
     for(std::uint32_t f : m_large) offer(f);
-    std::array<std::ptrdiff_t, 3> c;
+    std::array<std::ptrdiff_t, 3> c, lo, hi;
     for(int a = 0; a < 3; ++a) c[a] = std::ptrdiff_t(cell(p[a], a));
     std::size_t visited = 0;
-    for(std::ptrdiff_t r = 0;; ++r)
+    for(std::ptrdiff_t r = 0; m_faces > 0; ++r)
     {
-      std::array<std::ptrdiff_t, 3> lo, hi;
       for(int a = 0; a < 3; ++a)
-      {
-        lo[a] = (std::max)(c[a] - r, std::ptrdiff_t(0));
-        hi[a] = (std::min)(c[a] + r, std::ptrdiff_t(m_n[a]) - 1);
-      }
+        lo[a] = (std::max)(c[a] - r, std::ptrdiff_t(0)), hi[a] = (std::min)(c[a] + r, std::ptrdiff_t(m_n[a]) - 1);
       for(std::ptrdiff_t z = lo[2]; z <= hi[2]; ++z)
         for(std::ptrdiff_t y = lo[1]; y <= hi[1]; ++y)
-        {
-          // inside the ring's shell, only its two cells on this row
-          const bool shell = (z == c[2] - r || z == c[2] + r || y == c[1] - r || y == c[1] + r);
-          const std::ptrdiff_t step = shell ? 1 : 2 * r;
-          for(std::ptrdiff_t x = c[0] - r; x <= c[0] + r; x += (step > 0 ? step : 1))
+          for(std::ptrdiff_t x = lo[0]; x <= hi[0]; ++x)
           {
-            if(x < lo[0] || x > hi[0]) continue;
+            if((std::max)({ std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2]) }) < r) continue;   // an inner ring's
             const std::size_t k = std::size_t(x) + m_n[0] * (std::size_t(y) + m_n[1] * std::size_t(z));
             ++visited;
             for(std::size_t j = m_begin[k]; j < m_begin[k + 1]; ++j) offer(m_entries[j]);
           }
-        }
       // every face outside the rings lies beyond one of their sides that is not the grid's
       double beyond = std::numeric_limits<double>::infinity();
       for(int a = 0; a < 3; ++a)
       {
-        if(c[a] - r > 0) beyond = (std::min)(beyond, p[a] - (m_low[a] + double(c[a] - r) * m_h));
-        if(c[a] + r < std::ptrdiff_t(m_n[a]) - 1) beyond = (std::min)(beyond, m_low[a] + double(c[a] + r + 1) * m_h - p[a]);
+        if(lo[a] > 0) beyond = (std::min)(beyond, p[a] - (m_low[a] + double(lo[a]) * m_h));
+        if(hi[a] + 1 < std::ptrdiff_t(m_n[a])) beyond = (std::min)(beyond, m_low[a] + double(hi[a] + 1) * m_h - p[a]);
       }
-      if(beyond == std::numeric_limits<double>::infinity() || (beyond > 0 && beyond * beyond > best_d2)) break;
+      if(beyond == std::numeric_limits<double>::infinity() || beyond * beyond > best_d2) break;
       if(visited > 4096 + m_faces / 16)
       {
         for(std::size_t f = 0; f < m_faces; ++f) offer(f);
@@ -164,11 +150,8 @@ private:
   {
     Box b;
     for(int a = 0; a < 3; ++a)
-    {
-      const double x = corner(f, 0)[a], y = corner(f, 1)[a], z = corner(f, 2)[a];
-      b[0][a] = (std::min)({ x, y, z });
-      b[1][a] = (std::max)({ x, y, z });
-    }
+      b[0][a] = (std::min)({ corner(f, 0)[a], corner(f, 1)[a], corner(f, 2)[a] }),
+      b[1][a] = (std::max)({ corner(f, 0)[a], corner(f, 1)[a], corner(f, 2)[a] });
     return b;
   }
 
@@ -176,15 +159,14 @@ private:
   std::size_t cell(double x, int a) const
   {
     const double t = std::floor((x - m_low[a]) / m_h);
-    if(!(t > 0)) return 0;
-    return (std::min)(std::size_t(t), m_n[a] - 1);
+    return (t > 0) ? (std::min)(std::size_t(t), m_n[a] - 1) : 0;
   }
 
   std::size_t m_faces;
-  std::array<double, 3> m_low{ { 0., 0., 0. } }, m_high{ { 0., 0., 0. } };
+  std::array<double, 3> m_low{ { DBL_MAX, DBL_MAX, DBL_MAX } }, m_high{ { -DBL_MAX, -DBL_MAX, -DBL_MAX } };
   double m_h = 1;
   std::array<std::size_t, 3> m_n{ { 1, 1, 1 } };
-  std::vector<std::size_t> m_begin, m_fill;
+  std::vector<std::size_t> m_begin;
   std::vector<std::uint32_t> m_entries, m_large;
 };
 
