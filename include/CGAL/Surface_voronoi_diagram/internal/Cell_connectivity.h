@@ -63,9 +63,9 @@ private:
 };
 
 /// The regions of the cells and their orphan pieces, on a view of the pieces (`Cut_pieces`,
-/// `Stitched_pieces`) that numbers them face by face and gives, for a piece, its site, its
-/// face, its area if it has one, and the pieces of its site joined to it (across mesh edges
-/// that are not breaklines, or inside its face).
+/// `Stitched_pieces`) that names them by numbers ascending face by face and gives the pieces
+/// of some sites with their sites, a piece's face and area (if it has one), and the pieces of
+/// its site joined to it (across mesh edges that are not breaklines, or inside its face).
 class Cell_connectivity
 {
 public:
@@ -89,23 +89,21 @@ public:
   {
     const std::size_t n = m_sites.size();
     auto searched = [&](std::size_t s) { return s != no_site && (!which || (*which)[s]); };
-    std::vector<std::size_t> chosen;   // the pieces searched, ascending; all of them if `which` is null
-    if(which)
-      for(std::size_t p = 0; p < view.size(); ++p)
-        if(searched(view.site(p))) chosen.push_back(p);
-    const std::size_t m = which ? chosen.size() : view.size();
-    auto piece = [&](std::size_t i) { return which ? chosen[i] : i; };
+    std::vector<std::size_t> chosen, site;   // the pieces searched, ascending, and their sites
+    view.for_each_piece(which, [&](std::size_t p, std::size_t s) {
+      chosen.push_back(p);
+      site.push_back(s);
+    });
+    const std::size_t m = chosen.size();
+    const bool dense = (m == 0 || chosen.back() + 1 == m);   // every piece of a view numbered 0, 1, ...
     auto index = [&](std::size_t p) {
-      return which ? std::size_t(std::lower_bound(chosen.begin(), chosen.end(), p) - chosen.begin()) : p;
+      return dense ? p : std::size_t(std::lower_bound(chosen.begin(), chosen.end(), p) - chosen.begin());
     };
     Disjoint_sets regions(m);
     auto join = [&](std::size_t begin, std::size_t end, auto&& unite) {
       for(std::size_t i = begin; i < end; ++i)
-      {
-        const std::size_t p = piece(i);
-        if(view.site(p) != no_site)
-          view.for_each_joined(p, [&](std::size_t q) { if(q > p) unite(i, index(q)); });
-      }
+        if(site[i] != no_site)
+          view.for_each_joined(chosen[i], [&](std::size_t q) { unite(i, index(q)); }, true);
     };
     typedef std::pair<std::size_t, std::size_t> Union;
     if(parallel)
@@ -132,7 +130,7 @@ public:
     for(std::size_t s = 0; s < n; ++s)
       if(searched(s)) regions_of_site[s] = 0;
     for(std::size_t i = 0; i < m; ++i)
-      if(regions.find(i) == i && view.site(piece(i)) != no_site) ++regions_of_site[view.site(piece(i))];
+      if(regions.find(i) == i && site[i] != no_site) ++regions_of_site[site[i]];
     broken = 0;
     orphans.clear();
     std::vector<std::size_t> principal(n, no_site);
@@ -148,10 +146,10 @@ public:
     if constexpr(Pieces::has_area)   // the largest region of a site outside its cell, the first of equal ones
     {
       std::vector<double> area(m, 0.);
-      for(std::size_t i = 0; i < m; ++i) area[regions.find(i)] += view.area(piece(i));
+      for(std::size_t i = 0; i < m; ++i) area[regions.find(i)] += view.area(chosen[i]);
       for(std::size_t i = 0; i < m; ++i)
       {
-        const std::size_t s = view.site(piece(i)), r = regions.find(i);
+        const std::size_t s = site[i], r = regions.find(i);
         if(s != no_site && regions_of_site[s] > 1 && view.piece_of(m_sites[s].face, s) == no_site
            && (principal[s] == no_site || area[r] > area[principal[s]]))
           principal[s] = r;
@@ -159,8 +157,8 @@ public:
     }
     for(std::size_t i = 0; i < m; ++i)
     {
-      const std::size_t s = view.site(piece(i));
-      if(s != no_site && regions_of_site[s] > 1 && regions.find(i) != principal[s]) orphans.emplace_back(s, view.face(piece(i)));
+      const std::size_t s = site[i];
+      if(s != no_site && regions_of_site[s] > 1 && regions.find(i) != principal[s]) orphans.emplace_back(s, view.face(chosen[i]));
     }
     return true;
   }
@@ -174,13 +172,14 @@ private:
   const Site_faces& m_breakline_site_faces;
 };
 
-/// The pieces of the per-face cuts, face by face (a face nobody reached is one piece of no
-/// site). A site's piece of a face is convex (a lower envelope of affine fields), so a face
-/// holds at most one piece per site and a cell's pieces join only across mesh edges: two
-/// pieces of a site in neighbouring faces are joined when their segments on the shared edge
-/// overlap with positive length, the segment ends computed as the stitcher places them. A
-/// face where the cutter met an exact tie can have segments of zero length that the stitcher
-/// welds away: the cuts do not decide then (`has_tie()`).
+/// The pieces of the per-face cuts, each named by its face and its index in the face's cut
+/// (`face << 32 | index`), so that a check of a few sites reads the cuts of their faces only.
+/// A site's piece of a face is convex (a lower envelope of affine fields), so a face holds at
+/// most one piece per site and a cell's pieces join only across mesh edges: two pieces of a
+/// site in neighbouring faces are joined when their segments on the shared edge overlap with
+/// positive length, the segment ends computed as the stitcher places them. A face where the
+/// cutter met an exact tie can have segments of zero length that the stitcher welds away: the
+/// cuts do not decide then (`has_tie()`).
 template <class TriangleMesh, class Blocked_edge>
 class Cut_pieces
 {
@@ -190,34 +189,39 @@ public:
 
   Cut_pieces(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts, const Blocked_edge& blocked_edge)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_blocked_edge(blocked_edge)
-  {
-    const std::size_t nf = mesh.number_of_faces();
-    m_piece_begin.assign(nf + 1, 0);
-    m_site.reserve(nf + nf / 2);
-    m_face.reserve(nf + nf / 2);
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      m_piece_begin[f] = m_site.size();
-      const Candidate_list& list = candidates[f];
-      const Face_cuts::Cut cut = cuts[f];
-      if(list.empty() || cut.whole_face)
-        m_site.push_back(list.empty() ? no_site : std::size_t(list[0].site));
-      else
-        for(const Face_cuts::Piece piece : cut.pieces) m_site.push_back(list[piece.candidate].site);
-      m_face.resize(m_site.size(), std::uint32_t(f));
-    }
-    m_piece_begin[nf] = m_site.size();
-  }
+  {}
 
-  std::size_t size() const { return m_site.size(); }
-  std::size_t site(std::size_t p) const { return m_site[p]; }
-  std::size_t face(std::size_t p) const { return m_face[p]; }
+  std::size_t face(std::size_t p) const { return p >> 32; }
   double area(std::size_t) const { return 0.; }
+
+  /// Calls `fn(p, site)` for the pieces of the sites `which` marks (all if null), ascending.
+  template <class Fn>
+  void for_each_piece(const std::vector<std::uint8_t>* which, const Fn& fn) const
+  {
+    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
+    {
+      const Candidate_list& list = m_candidates[f];
+      bool any = !which;
+      for(std::size_t j = 0; j < list.size() && !any; ++j) any = ((*which)[list[j].site] != 0);
+      if(!any || list.empty()) continue;   // most faces, for a few sites: their cuts are not read
+      const Face_cuts::Cut cut = m_cuts[f];
+      const std::size_t count = cut.whole_face ? 1 : cut.pieces.size();
+      for(std::size_t local = 0; local < count; ++local)
+      {
+        const std::uint32_t site = list[cut.whole_face ? 0 : cut.pieces[local].candidate].site;
+        if(!which || (*which)[site]) fn(f << 32 | local, std::size_t(site));
+      }
+    }
+  }
 
   std::size_t piece_of(std::size_t f, std::size_t site) const
   {
-    for(std::size_t p = m_piece_begin[f]; p < m_piece_begin[f + 1]; ++p)
-      if(m_site[p] == site) return p;
+    const Face_cuts::Cut cut = m_cuts[f];
+    const Candidate_list& list = m_candidates[f];
+    if(list.empty()) return no_site;
+    if(cut.whole_face) return list[0].site == site ? f << 32 : no_site;
+    for(std::size_t local = 0; local < cut.pieces.size(); ++local)
+      if(list[cut.pieces[local].candidate].site == site) return f << 32 | local;
     return no_site;
   }
 
@@ -230,17 +234,17 @@ public:
     return false;
   }
 
-  /// Calls `visit(q)` for every piece q of p's site in a face across an edge of p that is not
-  /// a breakline, where the two overlap.
+  /// Calls `visit(q)` for every piece q of p's site (after p, if `later_only`) in a face across
+  /// an edge of p that is not a breakline, where the two overlap.
   template <class Visit>
-  void for_each_joined(std::size_t p, const Visit& visit) const
+  void for_each_joined(std::size_t p, const Visit& visit, bool later_only = false) const
   {
-    const std::size_t f = m_face[p];
+    const std::size_t f = face(p), site = candidate_of(p).site;
     for(int k = 0; k < 3; ++k)
     {
       const std::size_t g = m_mesh.neighbors[f][k];
-      if(g == Mesh::none || m_blocked_edge(m_mesh.edges[f][k])) continue;
-      const std::size_t q = piece_of(g, m_site[p]);
+      if(g == Mesh::none || (later_only && g < f) || m_blocked_edge(m_mesh.edges[f][k])) continue;
+      const std::size_t q = piece_of(g, site);
       if(q != no_site && overlap(p, k, q)) visit(q);
     }
   }
@@ -257,35 +261,35 @@ public:
   /// break the order of the links.
   bool find_suspects(std::vector<std::uint8_t>& suspect, bool parallel) const
   {
-    // in ascending order, as binary searches want
+    // ascending, as binary searches want
     const std::vector<std::size_t> breaks = gather_in_chunk_order<std::size_t>(m_mesh.number_of_faces(), 4096, parallel,
         [&](std::size_t begin, std::size_t end, std::vector<std::size_t>& found) {
       for(std::size_t f = begin; f < end; ++f)
-        if(m_piece_begin[f + 1] > m_piece_begin[f] + 1)   // a face in one piece keeps its edges whole
-          for(std::size_t p = m_piece_begin[f]; p < m_piece_begin[f + 1]; ++p)
-            if(!joined_to_parent(p)) found.push_back(p);
+      {
+        const Face_cuts::Cut cut = m_cuts[f];
+        if(cut.whole_face || m_candidates[f].empty()) continue;   // a face in one piece keeps its edges whole
+        for(std::size_t local = 0; local < cut.pieces.size(); ++local)
+          if(!joined_to_parent(f << 32 | local)) found.push_back(f << 32 | local);
+      }
     });
     if(breaks.size() > 4096) return false;
     for(std::size_t p : breaks)
-      if(!suspect[m_site[p]] && !reaches_rooted_piece(p, breaks)) suspect[m_site[p]] = 1;
+      if(!suspect[candidate_of(p).site] && !reaches_rooted_piece(p, breaks)) suspect[candidate_of(p).site] = 1;
     return true;
   }
 
 private:
   const Candidate& candidate_of(std::size_t p) const
   {
-    const std::size_t f = m_face[p];
+    const std::size_t f = face(p);
     const Face_cuts::Cut cut = m_cuts[f];
-    return m_candidates[f][cut.whole_face ? 0 : cut.pieces[p - m_piece_begin[f]].candidate];
+    return m_candidates[f][cut.whole_face ? 0 : cut.pieces[p & 0xffffffffu].candidate];
   }
-
-  bool is_single(std::size_t f) const { return m_piece_begin[f + 1] == m_piece_begin[f] + 1; }
 
   // Whether pieces p and q overlap on the edge between their faces (local edge k of p's face).
   bool overlap(std::size_t p, int k, std::size_t q) const
   {
-    const std::size_t f = m_face[p], g = m_face[q];
-    if(is_single(f) && is_single(g)) return true;   // most faces: a face in one piece is the whole triangle
+    const std::size_t f = face(p), g = face(q);
     int kg = 0;
     while(kg < 3 && m_mesh.neighbors[g][kg] != f) ++kg;
     double lo_f, hi_f, lo_g, hi_g;
@@ -315,7 +319,7 @@ private:
       if(std::binary_search(breaks.begin(), breaks.end(), p)) return false;
       const Candidate& x = candidate_of(p);
       if(x.from_edge == Candidate::at_site) return true;
-      const std::size_t g = m_mesh.neighbors[m_face[p]][x.from_edge];
+      const std::size_t g = m_mesh.neighbors[face(p)][x.from_edge];
       const std::size_t q = (g == Mesh::none) ? no_site : piece_of(g, x.site);
       if(q == no_site || !overlap(p, x.from_edge, q)) return false;
       p = q;
@@ -341,7 +345,7 @@ private:
   // (from its lower vertex index); false if it has none.
   bool segment_on_edge(std::size_t p, int k, double& lo, double& hi) const
   {
-    const std::size_t f = m_face[p];
+    const std::size_t f = face(p);
     const Face_cuts::Cut cut = m_cuts[f];
     if(cut.whole_face || cut.pieces.size() <= 1)
     {
@@ -349,7 +353,7 @@ private:
       hi = 1.;
       return true;
     }
-    const Face_cuts::Piece piece = cut.pieces[p - m_piece_begin[f]];
+    const Face_cuts::Piece piece = cut.pieces[p & 0xffffffffu];
     const std::size_t m = piece.vertices.size();
     for(std::size_t j = 0; j < m; ++j)
     {
@@ -386,9 +390,6 @@ private:
   const Candidate_lists& m_candidates;
   const Face_cuts& m_cuts;
   Blocked_edge m_blocked_edge;
-  std::vector<std::size_t> m_piece_begin;   // the pieces of face f: [m_piece_begin[f], m_piece_begin[f + 1])
-  std::vector<Site_index_32> m_site;
-  std::vector<std::uint32_t> m_face;
 };
 
 /// The pieces of the stitched partition: two pieces are adjacent when they share a piece
@@ -405,17 +406,24 @@ public:
     : m_mesh(mesh), m_partition(partition), m_blocked_edge(blocked_edge)
   {}
 
-  std::size_t size() const { return m_partition.pieces.size(); }
   std::size_t site(std::size_t p) const { return m_partition.pieces[p].site; }
   std::size_t face(std::size_t p) const { return m_partition.pieces[p].face; }
   double area(std::size_t p) const { return m_partition.pieces[p].area; }
   std::size_t piece_of(std::size_t f, std::size_t site) const { return m_partition.piece_of(f, site); }
 
+  /// Calls `fn(p, site)` for the pieces of the sites `which` marks (all pieces if null), ascending.
+  template <class Fn>
+  void for_each_piece(const std::vector<std::uint8_t>* which, const Fn& fn) const
+  {
+    for(std::size_t p = 0; p < m_partition.pieces.size(); ++p)
+      if(!which || (site(p) != no_site && (*which)[site(p)])) fn(p, site(p));
+  }
+
   template <class Visit>
-  void for_each_joined(std::size_t p, const Visit& visit) const
+  void for_each_joined(std::size_t p, const Visit& visit, bool later_only = false) const
   {
     for_each_adjacent(p, [&](std::size_t q, std::size_t e) {
-      if(site(q) == site(p) && (e == no_site || !m_blocked_edge(e))) visit(q);
+      if((q > p || !later_only) && site(q) == site(p) && (e == no_site || !m_blocked_edge(e))) visit(q);
     });
   }
 
@@ -492,7 +500,7 @@ std::vector<std::vector<std::size_t> > site_neighbors(const Indexed_mesh<Triangl
   std::vector<std::vector<std::size_t> > out(number_of_sites);
   auto no_breakline = [](std::size_t) { return false; };
   const Stitched_pieces<TriangleMesh, decltype(no_breakline)> pieces(mesh, partition, no_breakline);
-  for(std::size_t p = 0; p < pieces.size(); ++p)
+  for(std::size_t p = 0; p < partition.pieces.size(); ++p)
     pieces.for_each_adjacent(p, [&](std::size_t q, std::size_t) {
       const std::size_t a = pieces.site(p), b = pieces.site(q);
       if(q > p && a != b && a != no_site && b != no_site)
