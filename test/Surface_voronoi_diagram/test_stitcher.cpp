@@ -4,13 +4,13 @@
 // no cracks, areas, one vertex per point, owners, the crossings on every mesh edge (counted
 // here with exact rationals), and a valid polygon mesh built from the pieces. The adversarial
 // cases put Voronoi vertices exactly on mesh edges and vertices and bisectors along edges.
-// Last, the repair's check on the cuts is held against the check on the stitched partition.
+// Last, the repair's connectivity check, on the cuts and on the stitched partition, is held
+// against regions found here from the partition's shared piece edges.
 #include <catch2/catch.hpp>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_connectivity.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -419,15 +419,79 @@ TEST_CASE("stitch: a triple point on a needle, where two sites' fields differ by
   CHECK(area == Approx(r->mesh.total_area).epsilon(1e-9));
 }
 
-// The repair's check on the cuts (Symbolic_cell_check.h: broken cells, orphan pieces, regions
-// per site and neighbours) against the check on the stitched partition, its oracle: random candidate subsets per face make cells in many pieces, and
-// neighbouring faces that disagree along their edge (a site winning different stretches of
-// it on each side), as the repair's bans do.
-TEST_CASE("cell check: the check on the cuts finds the stitched partition's broken cells and orphans", "[stitcher][repair]")
+// An oracle for the connectivity check, independent of its views: the pieces of a site are
+// joined where one has the piece edge (u, w) and the other (w, u), except across a blocked
+// mesh edge; its regions, and the pieces outside the region of the site's location (or, for a
+// site without a piece there, outside its largest region), as (site, face) pairs.
+struct Oracle_regions
+{
+  std::vector<std::size_t> regions_of_site;
+  std::set<std::pair<std::size_t, std::size_t> > orphans;
+};
+
+template <class Blocked>
+Oracle_regions oracle_regions(const St_indexed& mesh, const SVI::Partition& part, const std::vector<SVI::Site>& sites,
+                              const Blocked& blocked)
+{
+  const std::size_t np = part.pieces.size();
+  std::vector<std::size_t> parent(np);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  std::function<std::size_t(std::size_t)> root = [&](std::size_t x) { return parent[x] == x ? x : parent[x] = root(parent[x]); };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> owner_of_edge;
+  for(std::size_t p = 0; p < np; ++p)
+  {
+    const auto& v = part.pieces[p].vertices;
+    for(std::size_t j = 0; j < v.size(); ++j) owner_of_edge[std::make_pair(v[j], v[(j + 1) % v.size()])] = p;
+  }
+  for(std::size_t p = 0; p < np; ++p)
+  {
+    const auto& v = part.pieces[p].vertices;
+    for(std::size_t j = 0; j < v.size(); ++j)
+    {
+      const auto it = owner_of_edge.find(std::make_pair(v[(j + 1) % v.size()], v[j]));
+      if(it == owner_of_edge.end()) continue;
+      const std::size_t q = it->second, f = part.pieces[p].face, g = part.pieces[q].face;
+      if(part.pieces[p].site != part.pieces[q].site || part.pieces[p].site == SVI::no_site) continue;
+      bool across_blocked = false;
+      for(int k = 0; k < 3; ++k)
+        across_blocked |= (f != g && mesh.neighbors[f][k] == g && blocked(mesh.edges[f][k]));
+      if(!across_blocked) parent[root(p)] = root(q);
+    }
+  }
+  Oracle_regions out;
+  out.regions_of_site.assign(sites.size(), 0);
+  std::vector<std::set<std::size_t> > roots(sites.size());
+  std::map<std::size_t, double> area;
+  for(std::size_t p = 0; p < np; ++p)
+    if(part.pieces[p].site != SVI::no_site)
+    {
+      roots[part.pieces[p].site].insert(root(p));
+      area[root(p)] += part.pieces[p].area;
+    }
+  for(std::size_t i = 0; i < sites.size(); ++i)
+  {
+    out.regions_of_site[i] = roots[i].size();
+    if(roots[i].size() <= 1) continue;
+    const std::size_t own = part.piece_of(sites[i].face, i);
+    std::size_t kept = (own != SVI::no_site) ? root(own) : *roots[i].begin();
+    if(own == SVI::no_site)
+      for(std::size_t r : roots[i])
+        if(area[r] > area[kept]) kept = r;
+    for(std::size_t p = 0; p < np; ++p)
+      if(part.pieces[p].site == i && root(p) != kept) out.orphans.insert(std::make_pair(i, std::size_t(part.pieces[p].face)));
+  }
+  return out;
+}
+
+// The connectivity check (Cell_connectivity.h: broken cells, orphan pieces, regions per site),
+// on the cuts and on the stitched partition, against the oracle: random candidate subsets per
+// face make cells in many pieces, and neighbouring faces that disagree along their edge (a
+// site winning different stretches of it on each side), as the repair's bans do.
+TEST_CASE("cell check: on the cuts and on the partition, the oracle's broken cells and orphans", "[stitcher][repair]")
 {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> u(-0.5, 10.5);
-  int decided = 0, with_broken = 0;
+  int decided = 0, with_broken = 0, outside = 0;
   for(int trial = 0; trial < 40; ++trial)
   {
     INFO("trial " << trial);
@@ -469,45 +533,49 @@ TEST_CASE("cell check: the check on the cuts finds the stitched partition's brok
         r.cuts.set(f, SVI::Face_cutter(r.candidates[f]).cut());
     }
     SVI::stitch(r.mesh, SVI::Candidate_table(SVI::Candidate_lists(r.candidates)), r.cuts, r.part);   // packed, as the builder does
-    // each site located in a face holding a piece of it (the last such face)
+    // each site located in a face holding a piece of it (the last such face), odd trials
+    // with a site outside its cell (located in a face without a piece of it, as weights do)
     std::vector<SVI::Site> located(sites.size());
     for(const SVI::Partition::Piece& p : r.part.pieces)
       if(p.site != SVI::no_site) located[p.site].face = p.face;
+    if(trial % 2 == 1)
+      for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
+        if(r.part.piece_of(f, 0) == SVI::no_site) located[0].face = f;
     auto blocked = [](std::size_t e) { return e % 29 == 0; };   // a few breaklines
-
-    std::size_t broken = 0;
-    std::vector<std::pair<std::size_t, std::size_t> > orphans, pairs, stitched_pairs;
-    std::vector<std::size_t> regions;
-    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, r.candidates, r.cuts);
-    if(!check.run(located, blocked, broken, orphans, &pairs, &regions)) continue;   // an exact tie somewhere
-    if(r.part.welded_vertices != 0 || r.part.dropped_pieces != 0) continue;        // the pipeline checks the stitched partition then
-    ++decided;
-    const SVI::Cell_components stitched = SVI::cell_components(r.mesh, r.part, sites.size(), blocked, &stitched_pairs);
-    CHECK(broken == SVI::number_of_broken_cells(stitched));
-    for(std::size_t i = 0; i < sites.size(); ++i) CHECK(regions[i] == stitched.site_components[i].size());
-    // the same neighbours (pairs of sites, either order, without the unreached area)
-    auto neighbour_set = [](const std::vector<std::pair<std::size_t, std::size_t> >& v) {
-      std::set<std::pair<std::size_t, std::size_t> > out;
-      for(const auto& ab : v)
-        if(ab.first != SVI::no_site && ab.second != SVI::no_site)
-          out.insert(std::make_pair((std::min)(ab.first, ab.second), (std::max)(ab.first, ab.second)));
-      return out;
+    const std::vector<std::pair<std::size_t, std::size_t> > no_breakline_sites;
+    const Oracle_regions oracle = oracle_regions(r.mesh, r.part, located, blocked);
+    auto orphan_set = [](const SVI::Cell_connectivity& c) {
+      CHECK(std::is_sorted(c.orphans.begin(), c.orphans.end(), [](const auto& x, const auto& y) { return x.second < y.second; }));
+      return std::set<std::pair<std::size_t, std::size_t> >(c.orphans.begin(), c.orphans.end());
     };
-    CHECK(neighbour_set(pairs) == neighbour_set(stitched_pairs));
-    SVI::Banned_fields banned(r.mesh.number_of_faces());
-    std::vector<std::size_t> dirty;
-    SVI::ban_orphan_pieces(located, r.part, stitched, banned, dirty);
-    CHECK(orphans.size() == banned.size());
-    for(const auto& x : orphans) CHECK(banned.contains(x.first, x.second));
-    std::vector<std::size_t> faces;
-    for(const auto& x : orphans) faces.push_back(x.second);
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    CHECK(faces == dirty);
-    with_broken += (broken > 0);
+    std::size_t oracle_broken = 0;
+    for(std::size_t n : oracle.regions_of_site) oracle_broken += (n > 1);
+
+    // the stitched partition always decides
+    SVI::Cell_connectivity on_partition(located, no_breakline_sites);
+    REQUIRE(on_partition.check(SVI::Stitched_pieces<St_mesh, decltype(blocked)>(r.mesh, r.part, blocked), nullptr, trial % 4 == 0));
+    CHECK(on_partition.regions_of_site == oracle.regions_of_site);
+    CHECK(on_partition.broken == oracle_broken);
+    CHECK(orphan_set(on_partition) == oracle.orphans);
+    outside += (trial % 2 == 1 && oracle.regions_of_site[0] > 1);
+
+    // the cuts, where they decide (no exact tie, no broken cell outside its site's location)
+    // and stitching welded and dropped nothing
+    SVI::Cell_connectivity on_cuts(located, no_breakline_sites);
+    const SVI::Cut_pieces<St_mesh, decltype(blocked)> cut_pieces(r.mesh, r.candidates, r.cuts, blocked);
+    if(cut_pieces.has_tie(nullptr) || !on_cuts.check(cut_pieces, nullptr, trial % 4 == 0)) continue;
+    if(r.part.welded_vertices != 0 || r.part.dropped_pieces != 0) continue;
+    ++decided;
+    CHECK(on_cuts.regions_of_site == oracle.regions_of_site);
+    CHECK(on_cuts.broken == oracle_broken);
+    CHECK(orphan_set(on_cuts) == oracle.orphans);
+    with_broken += (on_cuts.broken > 0);
   }
-  // the trials must exercise the check: most decide, and most of those have broken cells
-  CHECK(decided >= 30);
-  CHECK(with_broken >= 20);
+  // the trials must exercise the check: most decide on the cuts, and most of those have
+  // broken cells; some sites outside their cell are broken
+  CHECK(decided >= 15);
+  CHECK(with_broken >= 15);
+  CHECK(outside >= 10);
 }
 
 namespace {
@@ -551,6 +619,17 @@ void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<
 
 bool folded_grid_blocked_edge(std::size_t e) { return e % 37 == 0; }
 
+typedef SVI::Cut_pieces<St_mesh, bool (*)(std::size_t)> Folded_grid_cut_pieces;
+
+// The connectivity check on the cuts of every site (`which` null) or of the sites `which`
+// marks; false where the cuts do not decide.
+bool check_folded_grid_cuts(const St_run& r, const SVI::Candidate_lists& candidates, SVI::Cell_connectivity& cells,
+                            const std::vector<std::uint8_t>* which = nullptr)
+{
+  const Folded_grid_cut_pieces pieces(r.mesh, candidates, r.cuts, &folded_grid_blocked_edge);
+  return !pieces.has_tie(nullptr) && cells.check(pieces, which, false);
+}
+
 // A real propagation over a folded grid (folded_grid_sites()), and the cuts of all its faces.
 // Not copied: the propagation holds references to the members.
 struct Folded_grid_propagation
@@ -584,10 +663,10 @@ struct Folded_grid_propagation
 
 } // namespace
 
-// The first round's check (Symbolic_cell_check::run_from_links(): the propagation's links
-// back to the sites, and a whole search of the suspects' pieces only) against the full check
-// on the cuts, its oracle, on real propagations over a steeply folded grid: where it decides,
-// the same broken cells, regions per site and orphans, in the same order.
+// The first round's check (Cut_pieces::find_suspects(): the propagation's links back to the
+// sites, and a whole search of the suspects' pieces only) against the check of every site on
+// the cuts, its oracle, on real propagations over a steeply folded grid: where it decides, the
+// same broken cells, regions per site and orphans, in the same order.
 TEST_CASE("cell check: the first round, from the propagation's links, finds what the full check finds", "[stitcher][repair]")
 {
   // in one global order, and in blocks of 24 faces (the links then cross blocks, and fields
@@ -596,7 +675,7 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
   {
     INFO("faces per block: " << faces_per_block);
     std::mt19937 rng(5);
-    int decided = 0, with_broken = 0, in_blocks = 0;
+    int decided = 0, with_broken = 0, in_blocks = 0, searched_fewer = 0;
     for(int trial = 0; trial < 40; ++trial)
     {
       INFO("trial " << trial);
@@ -606,29 +685,32 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
       auto& propagation = *grid.propagation;
       in_blocks += (propagation.statistics.blocks > 1 && propagation.statistics.rounds > 1);
 
-      SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
-      std::size_t broken = 0, quick_broken = 0;
-      std::vector<std::pair<std::size_t, std::size_t> > orphans, quick_orphans;
-      std::vector<std::size_t> regions, quick_regions;
-      const bool quick = check.run_from_links(located, folded_grid_blocked_edge, quick_broken, quick_orphans, quick_regions, false);
-      if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;   // an exact tie
-      if(!quick) continue;
+      SVI::Cell_connectivity full(located, grid.breakline_site_faces), quick(located, grid.breakline_site_faces);
+      if(!check_folded_grid_cuts(r, propagation.candidates, full)) continue;   // an exact tie
+      const Folded_grid_cut_pieces pieces(r.mesh, propagation.candidates, r.cuts, &folded_grid_blocked_edge);
+      for(std::size_t i = 0; i < located.size(); ++i) quick.regions_of_site[i] = (pieces.piece_of(located[i].face, i) != SVI::no_site);
+      std::vector<std::uint8_t> suspect(located.size(), 0);
+      REQUIRE(pieces.find_suspects(suspect, trial % 2 == 0));
+      if(!quick.check(pieces, &suspect, false)) continue;
       ++decided;
-      CHECK(quick_broken == broken);
-      CHECK(quick_regions == regions);
-      CHECK(quick_orphans == orphans);
-      with_broken += (broken > 0);
+      searched_fewer += (std::count(suspect.begin(), suspect.end(), 1) < std::ptrdiff_t(located.size()));
+      CHECK(quick.broken == full.broken);
+      CHECK(quick.regions_of_site == full.regions_of_site);
+      CHECK(quick.orphans == full.orphans);
+      with_broken += (full.broken > 0);
     }
-    // the trials must exercise it: most decide, and many of those have broken cells
+    // the trials must exercise it: most decide, many of those have broken cells, and the
+    // links spare some sites the search
     CHECK(decided >= 30);
     CHECK(with_broken >= 10);
+    CHECK(searched_fewer >= 20);
     CHECK(in_blocks == (faces_per_block > 0 ? 40 : 0));
   }
 }
 
-// The later rounds' check (Symbolic_cell_check::run_on_sites(): only the sites on the faces a
-// repair round touched, before or after, searched whole; the others keep their count) against
-// the full check, round after round of the repair, on the same folded grids.
+// The later rounds' check (only the sites on the faces a repair round touched, before or
+// after, searched whole; the others keep their count) against the check of every site,
+// round after round of the repair, on the same folded grids.
 TEST_CASE("cell check: a later round, on the sites the repair changed, finds what the full check finds", "[stitcher][repair]")
 {
   std::mt19937 rng(11);
@@ -642,18 +724,15 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
     const std::vector<SVI::Site>& located = grid.located;
     auto& propagation = *grid.propagation;
 
-    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, propagation.candidates, r.cuts);
+    SVI::Cell_connectivity local(located, grid.breakline_site_faces);
     SVI::Banned_fields banned(r.mesh.number_of_faces());
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
-    std::size_t broken = 0;
-    std::vector<std::pair<std::size_t, std::size_t> > orphans;
-    std::vector<std::size_t> regions;
-    if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) continue;
-    for(int round = 1; round <= 6 && broken > 0; ++round)
+    if(!check_folded_grid_cuts(r, propagation.candidates, local)) continue;
+    for(int round = 1; round <= 6 && local.broken > 0; ++round)
     {
       INFO("round " << round);
       std::vector<std::size_t> dirty, touched;
-      for(const auto& x : orphans)
+      for(const auto& x : local.orphans)
       {
         banned.insert(x.first, x.second);
         if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
@@ -667,17 +746,14 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
         for(const SVI::Candidate& x : propagation.candidates[f]) affected[x.site] = 1;
       partial += (std::count(affected.begin(), affected.end(), 1) < std::ptrdiff_t(located.size()));
 
-      std::size_t local_broken = 0;
-      std::vector<std::pair<std::size_t, std::size_t> > local_orphans;
-      std::vector<std::size_t> local_regions = regions;
-      const bool local = check.run_on_sites(located, touched, affected, folded_grid_blocked_edge, local_broken, local_orphans, local_regions);
-      if(!check.run(located, folded_grid_blocked_edge, broken, orphans, nullptr, &regions)) break;
-      if(!local) break;
+      SVI::Cell_connectivity full(located, grid.breakline_site_faces);
+      if(!check_folded_grid_cuts(r, propagation.candidates, full)) break;
+      if(!check_folded_grid_cuts(r, propagation.candidates, local, &affected)) break;
       ++rounds_compared;
-      with_broken += (broken > 0);
-      CHECK(local_broken == broken);
-      CHECK(local_regions == regions);
-      CHECK(local_orphans == orphans);
+      with_broken += (full.broken > 0);
+      CHECK(local.broken == full.broken);
+      CHECK(local.regions_of_site == full.regions_of_site);
+      CHECK(local.orphans == full.orphans);
     }
   }
   // the repair must run: many rounds compared, some still broken after a round, and the
@@ -700,17 +776,15 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
     Folded_grid_propagation kept(1.5 + 0.05 * trial, 8 + trial % 20, rng_kept);
     Folded_grid_propagation freed(1.5 + 0.05 * trial, 8 + trial % 20, rng_freed);
     St_run& r = kept.r;
-    SVI::Symbolic_cell_check<St_mesh> check(r.mesh, kept.propagation->candidates, r.cuts);
+    SVI::Cell_connectivity cells(kept.located, kept.breakline_site_faces);
     SVI::Banned_fields banned(r.mesh.number_of_faces());
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
-    std::size_t broken = 0;
-    std::vector<std::pair<std::size_t, std::size_t> > orphans;
-    if(!check.run(kept.located, folded_grid_blocked_edge, broken, orphans, nullptr, nullptr)) continue;
-    for(int round = 1; round <= 6 && broken > 0; ++round)
+    if(!check_folded_grid_cuts(r, kept.propagation->candidates, cells)) continue;
+    for(int round = 1; round <= 6 && cells.broken > 0; ++round)
     {
       INFO("round " << round);
       std::vector<std::size_t> dirty, touched_kept, touched_freed;
-      for(const auto& x : orphans)
+      for(const auto& x : cells.orphans)
       {
         banned.insert(x.first, x.second);
         if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
@@ -734,7 +808,7 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
       CHECK(freed.propagation->statistics.admitted == kept.propagation->statistics.admitted);
       rounds_admitting += (kept.propagation->statistics.admitted > admitted_before);
       cut_listed_faces(kept.propagation->candidates, touched_kept, r.cuts);
-      if(!check.run(kept.located, folded_grid_blocked_edge, broken, orphans, nullptr, nullptr)) break;
+      if(!check_folded_grid_cuts(r, kept.propagation->candidates, cells)) break;
     }
   }
   // the repairs must run, and admit fields again (the offers rebuilt decide those)

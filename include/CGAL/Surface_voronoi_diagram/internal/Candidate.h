@@ -44,7 +44,7 @@ struct Candidate
   std::uint32_t site;
   // The local edge of the face across which the propagation brought this field (from the
   // site's candidate in the neighbour there, admitted before this one), or `at_site`: the
-  // check of the cells follows these links back to the sites (Symbolic_cell_check.h).
+  // check of the cells follows these links back to the sites (Cell_connectivity.h).
   std::uint8_t from_edge = at_site;
   std::array<double, 3> value;
 };

@@ -18,14 +18,12 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Cell_components.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Cell_repair.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_connectivity.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_data.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Propagation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stage_times.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Symbolic_cell_check.h>
 #include <CGAL/Surface_voronoi_diagram/internal/global_nearest.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Stitching/Stitcher.h>
@@ -63,170 +61,176 @@ public:
 
   Diagram_builder(Diagram_data<TriangleMesh>& data, const Fields& fields, const Builder_settings& settings,
                   const std::function<bool(double)>& callback, Stage_times* times)
-    : m_data(data), m_mesh(*data.mesh), m_fields(fields), m_settings(settings), m_callback(callback), m_timer(times)
+    : m_data(data), m_mesh(*data.mesh), m_fields(fields), m_settings(settings), m_callback(callback), m_timer(times),
+      m_blocked{ &m_mesh, &data.breaklines }, m_banned(m_mesh.number_of_faces())
   {}
 
   /// computes the cells; returns false if the callback stopped it
   bool run()
   {
-    Diagram_data<TriangleMesh>& d = m_data;
-    const std::size_t n = d.sites.size();
-    std::vector<std::size_t> site_faces(n);
-    for(std::size_t i = 0; i < n; ++i) site_faces[i] = d.sites[i].face;
-    Banned_fields banned(m_mesh.number_of_faces());
-    const bool global_nearest = use_global_nearest();
-    auto is_blocked = [&](std::size_t f, int k) { return !d.breaklines.empty() && d.breaklines.is_blocked(m_mesh.edges[f][k]); };
-    auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
-
-    d.statistics = Diagram_statistics();
-    d.statistics.sites = n;
-    d.statistics.merged_sites = d.number_of_merged_sites();
-    d.statistics.surface_area = m_mesh.total_area;
-
-    typedef Propagation<TriangleMesh, Fields, decltype(is_blocked)> Field_propagation;
-    Field_propagation propagation(m_mesh, m_fields, site_faces, d.breakline_site_faces, is_blocked, m_settings.parallel);
-    // A lazy metric's value (a fast-marching front advanced) costs far more than a field's
-    // crossing into another block, and smaller blocks keep their fronts in cache: blocks of a
-    // quarter the size
-    if(!std::is_same<Fields, Embedding_values>::value)
-      propagation.set_block_sizes(Field_propagation::faces_per_block / 4, Field_propagation::sites_per_block);
-    if(global_nearest)
-      find_global_nearest(propagation.candidates);
-    else if(!start_from_previous(propagation))
-      propagation.run();
-    m_fields.propagation_done();
-    m_timer.stop("propagation");
+    start_statistics();
+    const std::vector<std::size_t> faces = site_faces();
+    Field_propagation propagation(m_mesh, m_fields, faces, m_data.breakline_site_faces, m_blocked, m_settings.parallel);
+    propagate(propagation);
     if(!progress(0.4)) return false;
-
     m_cuts.reset(m_mesh.number_of_faces());
     cut_faces(propagation.candidates, nullptr);
-    d.statistics.propagation_events = propagation.statistics.events;
-    d.statistics.admitted_fields = propagation.statistics.admitted;
-    d.statistics.propagation_blocks = propagation.statistics.blocks;
-    d.statistics.propagation_rounds = propagation.statistics.rounds;
     m_timer.stop("cutting");
     if(!progress(0.7)) return false;
 
-    // The repair rounds decide on the cuts, and the partition is stitched once, after them
-    // (see Symbolic_cell_check.h). The check on the stitched partition runs where the cuts
-    // cannot decide (an exact tie), and where stitching welded or dropped what the cuts keep
-    // apart (features below double precision); its rounds then go on from there.
-    std::vector<std::size_t> dirty, touched;
-    auto blocked_edge = [&](std::size_t e) { return d.breaklines.is_blocked(e); };
-    std::size_t round = 0;
-    bool first_check_done = false, decided_on_cuts = false;
-    std::vector<std::size_t> regions_of_site;
-    // the sites a repair round can have changed: those on the faces it touched, before or after
-    std::vector<std::uint32_t> sites_before;
-    std::vector<std::uint8_t> affected;
-    // a repair round, once the banned fields' faces are in `dirty`
-    auto repair_round = [&]() {
-      sites_before.clear();
-      propagation.repropagate(dirty, is_banned, touched, &sites_before);
-      cut_faces(propagation.candidates, &touched);
-      affected.assign(n, 0);
-      for(std::uint32_t s : sites_before) affected[s] = 1;
-      for(std::size_t f : touched)
-        for(const Candidate& x : propagation.candidates[f]) affected[x.site] = 1;
-      d.statistics.repair_rounds = round + 1;
-      d.statistics.banned_fields = banned.size();
-    };
-    auto round_done = [&]() { return progress(0.7 + 0.25 * double(round + 1) / double(round + 2)); };
-    if(!global_nearest && m_settings.repair)
+    // The repair rounds decide on the cuts, and the partition is stitched once, after them.
+    // From a round the cuts cannot decide (an exact tie, a broken weighted site outside its
+    // cell), or where stitching welded or dropped what the cuts keep apart, the stitched
+    // partition decides, stitched again after each round.
+    Cell_connectivity cells(m_data.sites, m_data.breakline_site_faces);
+    bool on_partition = !repairs();
+    for(std::size_t round = 0;; ++round)
     {
-      Symbolic_cell_check<TriangleMesh> check(m_mesh, propagation.candidates, m_cuts, &d.breakline_site_faces);
-      std::vector<std::pair<std::size_t, std::size_t> > orphans;
-      for(;; ++round)
+      const bool decided = !on_partition && check_cuts(cells, propagation.candidates, round);
+      if(!decided || cells.broken == 0 || round >= m_settings.max_repair_rounds)   // the partition decides, or is the result
       {
-        // in proportion to what is broken: the first round follows the propagation's links,
-        // the later ones search the sites a repair changed
-        std::size_t broken = 0;
-        const bool decided = (round == 0)
-            ? check.run_from_links(d.sites, blocked_edge, broken, orphans, regions_of_site, m_settings.parallel)
-            : check.run_on_sites(d.sites, touched, affected, blocked_edge, broken, orphans, regions_of_site);
-        if(!decided && !check.run(d.sites, blocked_edge, broken, orphans, nullptr, &regions_of_site, m_settings.parallel))
-          break;
-        if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
-        first_check_done = true;
-        decided_on_cuts = (broken == 0);
-        if(broken == 0 || round >= m_settings.max_repair_rounds) break;
-        dirty.clear();
-        for(const std::pair<std::size_t, std::size_t>& x : orphans)
-        {
-          banned.insert(x.first, x.second);
-          if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
-        }
-        repair_round();
-        if(!round_done()) return false;
+        if constexpr(ForRelaxation)
+          if(decided && cells.broken == 0 && m_settings.cells_only) return measure_on_cuts(propagation.candidates, cells);
+        stitch_partition(propagation);
+        const Partition& partition = m_data.partition;
+        on_partition = !decided || cells.broken != 0 || partition.welded_vertices != 0 || partition.dropped_pieces != 0;
+        if(on_partition) cells.check(Stitched_pieces<TriangleMesh, Blocked>(m_mesh, partition, m_blocked), nullptr, m_settings.parallel);
       }
+      if(round == 0) m_data.statistics.broken_cells_before_repair = cells.broken;
+      if(cells.broken == 0 || !repairs() || round >= m_settings.max_repair_rounds) break;
+      repair(propagation, cells.orphans, round);
+      if(!progress(0.7 + 0.25 * double(round + 1) / double(round + 2))) return false;
     }
     m_timer.stop("repair");
-    if constexpr(ForRelaxation)
-    {
-      if(m_settings.cells_only && decided_on_cuts)
-        return measure_on_cuts(propagation.candidates, regions_of_site);
-    }
-    propagation.release_working_state();   // a repair after stitching builds it again
-    // packed for stitching, where the memory peaks; a repair after it unpacks them
-    d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
-    // what the candidates alone decide (the vertices' owners) beside the stitching's naming
-    // of the vertices, which runs on one thread: the two write to different arrays
-    stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel, [&]() { summarize_candidates(); });
-    m_timer.stop("cutting");
-
-    bool restitched = false;
-    for(;; ++round)
-    {
-      if(decided_on_cuts && d.partition.welded_vertices == 0 && d.partition.dropped_pieces == 0)
-      {
-        d.statistics.broken_cells = 0;
-        break;
-      }
-      decided_on_cuts = false;   // from here on, the stitched partition decides
-      const Cell_components components = cell_components(m_mesh, d.partition, n, blocked_edge, nullptr, m_settings.parallel, &d.breakline_site_faces);
-      regions_of_site.assign(n, 0);
-      for(std::size_t i = 0; i < n; ++i) regions_of_site[i] = components.site_components[i].size();
-      const std::size_t broken = number_of_broken_cells(components);
-      if(!first_check_done) d.statistics.broken_cells_before_repair = broken;
-      first_check_done = true;
-      d.statistics.broken_cells = broken;
-      if(broken == 0 || global_nearest || !m_settings.repair || round >= m_settings.max_repair_rounds)
-        break;
-      ban_orphan_pieces(d.sites, d.partition, components, banned, dirty);
-      propagation.candidates = d.candidates.to_lists();
-      d.candidates.clear();
-      repair_round();
-      d.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
-      stitch(m_mesh, d.candidates, m_cuts, d.partition, m_settings.parallel);
-      restitched = true;
-      if(!round_done()) return false;
-    }
-    if(restitched) summarize_candidates();   // the candidates a repair changed
-    m_timer.stop("repair");
-    // the cells' areas: part of building the cells, whatever the repair did (timed as repair)
-    summarize(regions_of_site);
+    // the cells' areas: part of building the cells, whatever the repair did
+    summarize(cells);
     m_timer.stop("cutting");
     return progress(1.);
   }
 
 private:
+  // whether mesh edge e, or local edge k of face f, is a breakline
+  struct Blocked
+  {
+    const Mesh* mesh;
+    const Breaklines* breaklines;
+    bool operator()(std::size_t e) const { return !breaklines->empty() && breaklines->is_blocked(e); }
+    bool operator()(std::size_t f, int k) const { return (*this)(mesh->edges[f][k]); }
+  };
+  typedef Propagation<TriangleMesh, Fields, Blocked> Field_propagation;
+
   static const Embedding_values* embedding_of(const Embedding_values& fields) { return &fields; }
   template <class Lazy>
   static const Embedding_values* embedding_of(const Lazy&) { return nullptr; }
 
   bool progress(double fraction) const { return !m_callback || m_callback(fraction); }
+  bool repairs() const { return m_settings.repair && !use_global_nearest(); }
+
+  void start_statistics()
+  {
+    Diagram_statistics& s = m_data.statistics;
+    s = Diagram_statistics();
+    s.sites = m_data.sites.size();
+    s.merged_sites = m_data.number_of_merged_sites();
+    s.surface_area = m_mesh.total_area;
+  }
+
+  std::vector<std::size_t> site_faces() const
+  {
+    std::vector<std::size_t> faces;
+    for(const Site& site : m_data.sites) faces.push_back(site.face);
+    return faces;
+  }
+
+  // the candidates of every face: the global nearest, or the propagation's
+  void propagate(Field_propagation& propagation)
+  {
+    // A lazy metric's value (a fast-marching front advanced) costs far more than a field's
+    // crossing into another block, and smaller blocks keep their fronts in cache: blocks of a
+    // quarter the size
+    if(!std::is_same<Fields, Embedding_values>::value)
+      propagation.set_block_sizes(Field_propagation::faces_per_block / 4, Field_propagation::sites_per_block);
+    if(use_global_nearest())
+      find_global_nearest(propagation.candidates);
+    else if(!start_from_previous(propagation))
+      propagation.run();
+    m_fields.propagation_done();
+    Diagram_statistics& s = m_data.statistics;
+    s.propagation_events = propagation.statistics.events;
+    s.admitted_fields = propagation.statistics.admitted;
+    s.propagation_blocks = propagation.statistics.blocks;
+    s.propagation_rounds = propagation.statistics.rounds;
+    m_timer.stop("propagation");
+  }
+
+  // The check on the cuts, in proportion to what is broken: the first round searches the
+  // sites the propagation's links suspect, a later one the sites the repair changed (every
+  // other site was whole: a broken cell's orphans were banned, which touched their faces).
+  // False where the cuts cannot decide.
+  bool check_cuts(Cell_connectivity& cells, const Candidate_lists& candidates, std::size_t round)
+  {
+    const Cut_pieces<TriangleMesh, Blocked> pieces(m_mesh, candidates, m_cuts, m_blocked);
+    if(pieces.has_tie(round == 0 ? nullptr : &m_touched)) return false;
+    if(round > 0) return cells.check(pieces, &m_affected, m_settings.parallel);
+    // the sites no link suspects are whole, or empty
+    for(std::size_t i = 0; i < m_data.sites.size(); ++i)
+      cells.regions_of_site[i] = (pieces.piece_of(m_data.sites[i].face, i) != no_site) ? 1 : 0;
+    m_affected.assign(m_data.sites.size(), 0);
+    const bool few_breaks = pieces.find_suspects(m_affected, m_settings.parallel);
+    return cells.check(pieces, few_breaks ? &m_affected : nullptr, m_settings.parallel);
+  }
+
+  void stitch_partition(Field_propagation& propagation)
+  {
+    m_timer.stop("repair");
+    propagation.release_working_state();   // a repair after stitching builds it again
+    // packed for stitching, where the memory peaks; a repair after it unpacks them
+    m_data.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
+    // what the candidates alone decide (the vertices' owners) beside the stitching's naming
+    // of the vertices, which runs on one thread: the two write to different arrays
+    stitch(m_mesh, m_data.candidates, m_cuts, m_data.partition, m_settings.parallel, [&]() { summarize_candidates(); });
+    m_timer.stop("cutting");
+  }
+
+  // Bans the site of each orphan piece from the piece's face, refills the faces around with
+  // the propagation and cuts them again; the sites on the faces it touched, before or after,
+  // are those it can have changed.
+  void repair(Field_propagation& propagation, const std::vector<std::pair<std::size_t, std::size_t> >& orphans, std::size_t round)
+  {
+    if(propagation.candidates.empty())   // packed for stitching
+    {
+      propagation.candidates = m_data.candidates.to_lists();
+      m_data.candidates.clear();
+    }
+    std::vector<std::size_t> dirty;
+    for(const std::pair<std::size_t, std::size_t>& x : orphans)
+    {
+      m_banned.insert(x.first, x.second);
+      if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
+    }
+    std::vector<std::uint32_t> sites_before;
+    propagation.repropagate(dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); }, m_touched,
+                            &sites_before);
+    cut_faces(propagation.candidates, &m_touched);
+    m_affected.assign(m_data.sites.size(), 0);
+    for(std::uint32_t s : sites_before) m_affected[s] = 1;
+    for(std::size_t f : m_touched)
+      for(const Candidate& x : propagation.candidates[f]) m_affected[x.site] = 1;
+    m_data.statistics.repair_rounds = round + 1;
+    m_data.statistics.banned_fields = m_banned.size();
+  }
 
   // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of the
   // cells are taken on them, without a partition
-  bool measure_on_cuts(Candidate_lists& candidates, const std::vector<std::size_t>& regions_of_site)
+  bool measure_on_cuts(Candidate_lists& candidates, const Cell_connectivity& cells)
   {
+    m_timer.stop("repair");
     Diagram_data<TriangleMesh>& d = m_data;
     d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, candidates, m_cuts, d.sites, embedding_of(m_fields),
                                                  d.centroid_density.get()).run();
-    d.statistics.broken_cells = 0;
     d.candidates = Candidate_table(std::move(candidates), m_settings.parallel);
     summarize_candidates();
-    summarize(regions_of_site);
+    summarize(cells);
     m_timer.stop("cutting");
     return progress(1.);
   }
@@ -311,10 +315,11 @@ private:
   }
 
   // The cells' areas and pieces, once the candidates are summarized.
-  void summarize(const std::vector<std::size_t>& regions_of_site)
+  void summarize(const Cell_connectivity& cells)
   {
     Diagram_data<TriangleMesh>& d = m_data;
     Diagram_statistics& s = d.statistics;
+    s.broken_cells = cells.broken;
     const std::size_t n = d.sites.size();
     d.cell_area.assign(n, 0.);
     d.cell_pieces.assign(n, 0);
@@ -330,7 +335,7 @@ private:
     }
     for(std::size_t i = 0; i < n; ++i)
     {
-      d.cell_pieces[i] = regions_of_site[i];
+      d.cell_pieces[i] = cells.regions_of_site[i];
       if(d.cell_pieces[i] == 0) ++s.empty_cells;
       else ++s.cells;
       s.pieces += d.cell_pieces[i];
@@ -345,7 +350,11 @@ private:
   Builder_settings m_settings;
   const std::function<bool(double)>& m_callback;
   Stage_timer m_timer;
+  Blocked m_blocked;
   Face_cuts m_cuts;
+  Banned_fields m_banned;
+  std::vector<std::size_t> m_touched;      // the faces the last repair round refilled
+  std::vector<std::uint8_t> m_affected;    // the sites the next check on the cuts searches
 };
 
 } // namespace internal
