@@ -467,7 +467,7 @@ public:
     check_weight(weight, m_next_sites.size());
     m_next_sites.push_back(m_locator->locate(s, m_next_sites.size()));
     m_next_sites.back().weight = weight;
-    m_previous_index.push_back(no_site);
+    m_resized = true;
     m_settings.has_weights = m_settings.has_weights || weight != 0;
     return m_next_sites.size() - 1;
   }
@@ -480,7 +480,7 @@ public:
     begin_changes();
     CGAL_precondition(i < m_next_sites.size() && m_next_sites.size() > 1);
     m_next_sites.erase(m_next_sites.begin() + std::ptrdiff_t(i));
-    m_previous_index.erase(m_previous_index.begin() + std::ptrdiff_t(i));
+    m_resized = true;
   }
 
   /// records that the power weight of site `i` becomes `weight` (see the named parameter
@@ -498,7 +498,7 @@ public:
 
   /// the number of sites the diagram will have after `update()`: `number_of_sites()` changed
   /// by the insertions and removals recorded since
-  std::size_t number_of_sites_after_update() const { return m_changed ? m_next_sites.size() : number_of_sites(); }
+  std::size_t number_of_sites_after_update() const { return m_next_sites.empty() ? number_of_sites() : m_next_sites.size(); }
 
   /// Computes the diagram of the sites as changed, from its previous state; does nothing if
   /// no change was recorded. The `callback` given to the constructor reports its progress
@@ -512,23 +512,18 @@ public:
   {
     namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(m_locator != nullptr, "the update state was released");
-    if(!m_changed) return;
+    if(m_next_sites.empty()) return;
     SVi::Stage_timer timer(m_times);
-    // Lloyd's cells-only diagrams start their propagation from the previous candidates, under
-    // the new indices: faster, but where a field stops another that a later field outweighs,
-    // the order of the propagation, and so the cells, can differ from a fresh diagram's
+    // Lloyd's cells-only diagrams, whose sites only move, start their propagation from the
+    // previous candidates: faster, but where a field stops another that a later field
+    // outweighs, the order of the propagation, and so the cells, can differ from a fresh
+    // diagram's
     std::unique_ptr<SVi::Candidate_sites> previous;
-    if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_data.cancelled)
-    {
-      std::vector<std::size_t> new_index(m_data.sites.size(), no_site);
-      for(std::size_t i = 0; i < m_previous_index.size(); ++i)
-        if(m_previous_index[i] != no_site) new_index[m_previous_index[i]] = i;
-      previous.reset(new SVi::Candidate_sites(m_data.candidates, &new_index));
-    }
+    if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_resized && !m_data.cancelled)
+      previous.reset(new SVi::Candidate_sites(m_data.candidates));
     m_data.sites.swap(m_next_sites);
-    m_changed = false;
     std::vector<SVi::Site>().swap(m_next_sites);
-    std::vector<std::size_t>().swap(m_previous_index);
+    m_resized = false;
     m_data.cancelled = false;
     m_data.clear_cells();
     m_centroids.clear();
@@ -543,9 +538,8 @@ public:
   {
     m_locator.reset();
     m_metric = nullptr;
-    m_changed = false;
     std::vector<Surface_voronoi::internal::Site>().swap(m_next_sites);
-    std::vector<std::size_t>().swap(m_previous_index);
+    m_resized = false;
   }
   /// @}
 
@@ -683,16 +677,12 @@ private:
       build(SVi::Lazy_values<TriangleMesh, Metric>(*m_data.mesh, *m_metric, m_data.sites));
   }
 
-  // the changes asked since the last computation: the sites as they are to be, and for each
-  // the index it had (`no_site` if inserted)
+  // the changes asked since the last computation: the sites as they are to be (empty when
+  // there is none)
   void begin_changes()
   {
     CGAL_precondition_msg(m_locator != nullptr, "the update state was released");
-    if(m_changed) return;
-    m_next_sites = m_data.sites;
-    m_previous_index.resize(m_next_sites.size());
-    for(std::size_t i = 0; i < m_previous_index.size(); ++i) m_previous_index[i] = i;
-    m_changed = true;
+    if(m_next_sites.empty()) m_next_sites = m_data.sites;
   }
 
   // metrics without is_cancelled() are never cancelled (chosen by int/long, not by "...":
@@ -719,9 +709,8 @@ private:
   Surface_voronoi::Coincident_sites m_policy = Surface_voronoi::Coincident_sites::REJECT;
   std::function<bool(double)> m_callback;
   Surface_voronoi::internal::Stage_times* m_times = nullptr;
-  bool m_changed = false;
   std::vector<Surface_voronoi::internal::Site> m_next_sites;
-  std::vector<std::size_t> m_previous_index;
+  bool m_resized = false;   // whether sites were inserted or removed since the last computation
   mutable std::vector<Point_3> m_centroids;
   mutable std::vector<std::vector<std::size_t> > m_neighbors;
 };

@@ -124,18 +124,14 @@ private:
 struct Candidate_sites
 {
   Candidate_sites() = default;
-  /// with `new_index`, site `s` becomes `new_index[s]`, and is left out where that is
-  /// `std::size_t(-1)` (an update of the diagram that removed sites)
-  explicit Candidate_sites(const Candidate_table& table, const std::vector<std::size_t>* new_index = nullptr)
+  explicit Candidate_sites(const Candidate_table& table)
     : first(table.size() + 1, 0)
   {
     sites.reserve(table.number_of_candidates());
     for(std::size_t f = 0; f < table.size(); ++f)
     {
       first[f] = static_cast<std::uint32_t>(sites.size());
-      for(const Candidate& x : table[f])
-        if(!new_index) sites.push_back(x.site);
-        else if((*new_index)[x.site] != std::size_t(-1)) sites.push_back(static_cast<std::uint32_t>((*new_index)[x.site]));
+      for(const Candidate& x : table[f]) sites.push_back(x.site);
     }
     first[table.size()] = static_cast<std::uint32_t>(sites.size());
   }
