@@ -159,7 +159,7 @@ public:
   ///         (a point is moved to the nearest surface point)
   /// \param tm the surface; it must stay alive and unchanged while the diagram is used
   /// \param metric the metric, built on `tm` (a lazy metric is told the sites and asked
-  ///        distances during the construction, and not used afterwards)
+  ///        distances during the construction, and not used afterwards except by `update()`)
   /// \param sites the sites; a site's index is its position in the range
   /// \param np an optional sequence of named parameters among the ones listed below
   ///
@@ -253,7 +253,7 @@ public:
   /// With an embedding (`SurfaceVoronoiEmbedding`) the constructor reads the coordinates of
   /// every vertex once; a lazy metric (`SurfaceVoronoiLazyMetric`) is told the sites with
   /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not
-  /// used after the constructor returns.
+  /// used after the constructor returns, except by the updates of a diagram over a lazy metric.
   ///
   /// \pre `tm` is a valid polygon mesh (its halfedges are consistent); the sites are not
   ///      empty. `Surface_voronoi::validate_input()` checks these too.
