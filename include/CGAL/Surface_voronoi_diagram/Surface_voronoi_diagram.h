@@ -661,6 +661,7 @@ private:
       SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation>
           builder(m_data, fields, m_settings, m_callback, m_times);
       if(!builder.run()) cancel();
+      m_settings.previous = nullptr;   // the caller's, gone after this computation
     };
     if constexpr(SVi::Is_embedding<Metric>::value)
     {
