@@ -37,5 +37,6 @@ run validate_input --
 run progress_callback --
 run parallel_diagram data/lampshade_thin.off 2 --
 run epeck_kernel --
+run own_relaxation --
 if [ -x "$bin/biharmonic_cholmod" ]; then run biharmonic_cholmod --; fi
 echo "all examples ran; outputs in $build/run"

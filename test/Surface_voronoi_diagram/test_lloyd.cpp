@@ -73,7 +73,7 @@ void check_cut_measures(const Mesh& m, Metric& metric, const std::vector<Locatio
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
   const Diagram stitched(m, metric, sites, np);
-  const Diagram on_cuts(m, metric, sites, SV::parameters::cells_only(true, np));
+  const Diagram on_cuts(m, metric, sites, SV::internal::hooks::cells_only(true, np));
   REQUIRE(stitched.statistics().broken_cells == 0);
   // the cuts decided here, so the measures do come from them, not from a partition
   REQUIRE(SV::internal::Diagram_access::data(on_cuts).measures.valid);
@@ -142,10 +142,11 @@ void check_started_from_previous(const Mesh& m, Metric& metric, const std::vecto
                                  const std::vector<Location<Mesh> >& after, const NP& np, bool exact)
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
-  const Diagram first(m, metric, before, SV::parameters::cells_only(true, np));
-  const auto previous = std::make_shared<const SV::internal::Candidate_sites>(SV::internal::Diagram_access::data(first).candidates);
-  const Diagram fresh(m, metric, after, SV::parameters::cells_only(true, np));
-  const Diagram started(m, metric, after, SV::parameters::cells_only(true, SV::parameters::previous_candidates(previous, np)));
+  // an update starts the propagation from the candidates before the sites moved
+  Diagram started(m, metric, before, SV::internal::hooks::cells_only(true, np));
+  for(std::size_t i = 0; i < after.size(); ++i) started.move_site(i, after[i]);
+  started.update();
+  const Diagram fresh(m, metric, after, SV::internal::hooks::cells_only(true, np));
   REQUIRE(fresh.statistics().broken_cells == 0);
   CHECK(started.statistics().broken_cells == 0);
   CHECK(started.statistics().unreached_faces == 0);

@@ -482,7 +482,7 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   CHECK(fresh->points[0] == SV::internal::to_point_d(get(vpm, moved)));
   Euclidean e(m);
   const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> own(m, e, sites);
-  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::parameters::shared_indexed_mesh(copy));
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::internal::hooks::shared_indexed_mesh(copy));
   CHECK(given.statistics().surface_area == own.statistics().surface_area);
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(given.cell_area(i) == own.cell_area(i));
@@ -496,7 +496,7 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   put(get(CGAL::vertex_point, flat), target(h, flat), get(get(CGAL::vertex_point, flat), source(h, flat)));
   const std::shared_ptr<const Indexed> flat_copy = std::make_shared<const Indexed>(flat, get(CGAL::vertex_point, flat));
   std::vector<SV::Input_problem> with_hooks = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
-      SV::parameters::shared_indexed_mesh(flat_copy, SV::parameters::checked_mesh_topology(true)));
+      SV::internal::hooks::shared_indexed_mesh(flat_copy, SV::internal::hooks::checked_mesh_topology(true)));
   std::vector<SV::Input_problem> without = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) });
   REQUIRE(!without.empty());
   REQUIRE(with_hooks.size() == without.size());

@@ -284,12 +284,12 @@ public:
     if(built()) return;
     const auto start = std::chrono::steady_clock::now();
     if(m_args.metric == "biharmonic" && m_args.dimension_full)
-      m_full.reset(new Full_spectrum_metric(m_mesh, SV::parameters::shared_indexed_mesh(m_indexed)));
+      m_full.reset(new Full_spectrum_metric(m_mesh, SV::internal::hooks::shared_indexed_mesh(m_indexed)));
     else if(m_args.metric == "biharmonic")
       m_biharmonic.reset(new Embedding_metric(m_mesh, SV::parameters::embedding_dimension(dimension,
-                                                      SV::parameters::shared_indexed_mesh(m_indexed))));
+                                                      SV::internal::hooks::shared_indexed_mesh(m_indexed))));
     else if(m_args.metric == "geodesic")
-      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh, SV::parameters::shared_indexed_mesh(m_indexed)));
+      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh, SV::internal::hooks::shared_indexed_mesh(m_indexed)));
     else
       m_euclidean.reset(new SV::Euclidean_embedding<Mesh>(m_mesh));
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -532,8 +532,8 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
   SV::internal::Stage_times times;
   // the fans were checked on the soup (the library's refinement and insertion keep them)
   const Diagram vd = with_diagram_parameters(choices,
-      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::checked_mesh_topology(true,
-          SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)))),
+      SV::internal::hooks::shared_indexed_mesh(indexed, SV::internal::hooks::checked_mesh_topology(true,
+          SV::internal::hooks::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)))),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
   // the dual first: with --valid-dual, one that is not valid is an error, and no file is written
@@ -762,7 +762,7 @@ int run_main(int argc, char** argv)
   Shared_indexed_mesh indexed = std::make_shared<const SV::internal::Indexed_mesh<Mesh> >(
       mesh, get(CGAL::vertex_point, mesh), SV::internal::use_threads<CGAL::Parallel_if_available_tag>());
   for(const SV::Input_problem& p : SV::validate_input(mesh, locations,
-                                                      SV::parameters::shared_indexed_mesh(indexed, SV::parameters::checked_mesh_topology(true))))
+                                                      SV::internal::hooks::shared_indexed_mesh(indexed, SV::internal::hooks::checked_mesh_topology(true))))
   {
     if(p.kind == SV::Input_problem::COINCIDENT_SITES && !lines.empty())
       fail(1, "sites file lines " + std::to_string(lines[p.element]) + " and " + std::to_string(lines[p.other])
@@ -851,7 +851,7 @@ int run_main(int argc, char** argv)
       const auto lloyd_start = Clock::now();
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
-        const auto steps = SV::parameters::shared_indexed_mesh(indexed,
+        const auto steps = SV::internal::hooks::shared_indexed_mesh(indexed,
             SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd)));
         return density
           ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)

@@ -9,8 +9,8 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// The Voronoi diagram of sites on a triangle-mesh surface, computed once at construction,
-// then queried.
+// The Voronoi diagram of sites on a triangle-mesh surface, computed at construction, then
+// queried, and computed again from its previous state after its sites change.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_SURFACE_VORONOI_DIAGRAM_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_SURFACE_VORONOI_DIAGRAM_H
@@ -72,8 +72,8 @@ namespace CGAL {
 /// the viewer `draw()`) read it.
 ///
 /// The diagram keeps a pointer to the mesh, which must stay alive and unchanged while the
-/// diagram is used; it does not use the metric after its construction. It can be moved,
-/// not copied.
+/// diagram is used; it does not use the metric after its construction, except for the updates
+/// of a diagram over a lazy metric (see `update()`). It can be moved, not copied.
 ///
 /// <b>Numerical range.</b> Coordinates up to \f$ 2^{200} \f$ (about 1.6e60) in magnitude and
 /// faces whose longest edge is at least \f$ 2^{-200} \f$ (about 6.2e-61), so that squared
@@ -159,7 +159,7 @@ public:
   ///         (a point is moved to the nearest surface point)
   /// \param tm the surface; it must stay alive and unchanged while the diagram is used
   /// \param metric the metric, built on `tm` (a lazy metric is told the sites and asked
-  ///        distances during the construction, and not used afterwards)
+  ///        distances during the construction, and not used afterwards except by `update()`)
   /// \param sites the sites; a site's index is its position in the range
   /// \param np an optional sequence of named parameters among the ones listed below
   ///
@@ -253,7 +253,7 @@ public:
   /// With an embedding (`SurfaceVoronoiEmbedding`) the constructor reads the coordinates of
   /// every vertex once; a lazy metric (`SurfaceVoronoiLazyMetric`) is told the sites with
   /// `set_sites()` and asked distances while the diagram is built. Either way the metric is not
-  /// used after the constructor returns.
+  /// used after the constructor returns, except by the updates of a diagram over a lazy metric.
   ///
   /// \pre `tm` is a valid polygon mesh (its halfedges are consistent); the sites are not
   ///      empty. `Surface_voronoi::validate_input()` checks these too.
@@ -421,6 +421,128 @@ public:
   double energy() const { return Surface_voronoi::internal::energy(m_data); }
   /// @}
 
+  /// \name Updates
+  /// The diagram can be computed again after its sites change, from its previous state: the
+  /// indexed mesh, the breaklines, the embedding's coordinates and the named parameters given
+  /// to the constructor are kept, so that an update costs less than a construction (the
+  /// propagation, the cutting and the stitching still run over the whole mesh). The changes
+  /// are recorded by `move_site()`,
+  /// `insert_site()`, `remove_site()` and `set_site_weight()`, which change nothing that the
+  /// queries read, and take effect at `update()`. The updated diagram is the one the
+  /// constructor would compute from the same sites in the same order, with the same named
+  /// parameters.
+  ///
+  /// Indices are those of a `std::vector` of the sites being edited: a change names a site by
+  /// its index among the sites as changed so far, `insert_site()` appends, and
+  /// `remove_site(i)` moves every later site down by one index (the indices of the updated
+  /// diagram are compacted, with no empty slot).
+  ///
+  /// A diagram over a lazy metric (`SurfaceVoronoiLazyMetric`) asks the metric again at
+  /// `update()`: the metric must then be alive, and is told the new sites. An embedding is not
+  /// used after the constructor. `release_update_state()` releases what only the updates need.
+  /// @{
+
+  /// records that site `i` moves to `s` (a `vertex_descriptor`, a `Face_location` or a point,
+  /// located as by the constructor), keeping its weight
+  /// \pre `i < number_of_sites_after_update()` and the update state was not released
+  /// \throws Surface_voronoi::Input_error as the constructor, if `s` is not on the mesh
+  template <class SiteDescription>
+  void move_site(std::size_t i, const SiteDescription& s)
+  {
+    begin_changes();
+    CGAL_precondition(i < m_next_sites.size());
+    const double weight = m_next_sites[i].weight;
+    m_next_sites[i] = m_locator->locate(s, i);
+    m_next_sites[i].weight = weight;
+  }
+
+  /// records that a site at `s` (as for `move_site()`) with power weight `weight` is appended;
+  /// returns its index, `number_of_sites_after_update() - 1`
+  /// \pre the update state was not released
+  /// \throws Surface_voronoi::Input_error if `s` is not on the mesh or `weight` is not finite
+  template <class SiteDescription>
+  std::size_t insert_site(const SiteDescription& s, double weight = 0)
+  {
+    begin_changes();
+    check_weight(weight, m_next_sites.size());
+    m_next_sites.push_back(m_locator->locate(s, m_next_sites.size()));
+    m_next_sites.back().weight = weight;
+    m_resized = true;
+    m_settings.has_weights = m_settings.has_weights || weight != 0;
+    return m_next_sites.size() - 1;
+  }
+
+  /// records that site `i` is removed: the sites after it move down by one index
+  /// \pre `i < number_of_sites_after_update()`, which is more than 1, and the update state
+  ///      was not released
+  void remove_site(std::size_t i)
+  {
+    begin_changes();
+    CGAL_precondition(i < m_next_sites.size() && m_next_sites.size() > 1);
+    m_next_sites.erase(m_next_sites.begin() + std::ptrdiff_t(i));
+    m_resized = true;
+  }
+
+  /// records that the power weight of site `i` becomes `weight` (see the named parameter
+  /// `site_weight_map`)
+  /// \pre `i < number_of_sites_after_update()` and the update state was not released
+  /// \throws Surface_voronoi::Input_error if `weight` is not finite
+  void set_site_weight(std::size_t i, double weight)
+  {
+    begin_changes();
+    CGAL_precondition(i < m_next_sites.size());
+    check_weight(weight, i);
+    m_next_sites[i].weight = weight;
+    m_settings.has_weights = m_settings.has_weights || weight != 0;
+  }
+
+  /// the number of sites the diagram will have after `update()`: `number_of_sites()` changed
+  /// by the insertions and removals recorded since
+  std::size_t number_of_sites_after_update() const { return m_next_sites.empty() ? number_of_sites() : m_next_sites.size(); }
+
+  /// Computes the diagram of the sites as changed, from its previous state; does nothing if
+  /// no change was recorded. The `callback` given to the constructor reports its progress
+  /// and may stop it, as for the constructor: the diagram is then `is_cancelled()`, with the
+  /// changed sites and no cells, and the next update computes it from scratch.
+  /// \pre the update state was not released; with a lazy metric, the metric given to the
+  ///      constructor is alive
+  /// \throws Surface_voronoi::Coincident_sites_error, Surface_voronoi::Numerical_error as the
+  ///         constructor
+  void update()
+  {
+    namespace SVi = Surface_voronoi::internal;
+    CGAL_precondition_msg(m_locator != nullptr, "the update state was released");
+    if(m_next_sites.empty()) return;
+    SVi::Stage_timer timer(m_times);
+    // Lloyd's cells-only diagrams, whose sites only move, start their propagation from the
+    // previous candidates: faster, but where a field stops another that a later field
+    // outweighs, the order of the propagation, and so the cells, can differ from a fresh
+    // diagram's
+    std::unique_ptr<SVi::Candidate_sites> previous;
+    if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_resized && !m_data.cancelled)
+      previous.reset(new SVi::Candidate_sites(m_data.candidates));
+    m_data.sites.swap(m_next_sites);
+    std::vector<SVi::Site>().swap(m_next_sites);
+    m_resized = false;
+    m_data.cancelled = false;
+    m_data.clear_cells();
+    m_centroids.clear();
+    m_neighbors.clear();
+    compute<true, true>(previous.get(), timer);
+  }
+
+  /// releases what only the updates need (the search structure built to locate sites given
+  /// as points, the changes recorded and not applied) and forgets the metric; the queries are
+  /// unaffected, and no change or update may follow
+  void release_update_state()
+  {
+    m_locator.reset();
+    m_metric = nullptr;
+    std::vector<Surface_voronoi::internal::Site>().swap(m_next_sites);
+    m_resized = false;
+  }
+  /// @}
+
   /// \name Access
   /// @{
 
@@ -452,9 +574,9 @@ private:
 
     m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     m_traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-    SVi::Stage_times* times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<SVi::Stage_times*>(nullptr));
-    const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
-    SVi::Stage_timer timer(times);
+    m_times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<SVi::Stage_times*>(nullptr));
+    m_callback = Surface_voronoi::internal::callback_of(np);
+    SVi::Stage_timer timer(m_times);
 
     const std::shared_ptr<const Indexed_mesh> given =
         choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
@@ -471,27 +593,55 @@ private:
                            CGAL::Constant_property_map<typename boost::graph_traits<TriangleMesh>::edge_descriptor, bool>(false)));
 
     // sites and their weights
-    const double max_distance = choose_parameter(get_parameter(np, SVnp::max_site_distance),
-                                                 std::numeric_limits<double>::infinity());
-    const SVi::Site_locator<TriangleMesh> locator(tm, *m_data.mesh, max_distance);
+    m_locator.reset(new SVi::Site_locator<TriangleMesh>(tm, *m_data.mesh,
+        choose_parameter(get_parameter(np, SVnp::max_site_distance), std::numeric_limits<double>::infinity())));
     constexpr bool has_weights = !is_default_parameter<NamedParameters, SVnp::site_weight_map_t>::value;
     for(const auto& s : sites)
     {
-      m_data.sites.push_back(locator.locate(s, m_data.sites.size()));
+      m_data.sites.push_back(m_locator->locate(s, m_data.sites.size()));
       if constexpr(has_weights)
         m_data.sites.back().weight = SVi::site_weight(get_parameter(np, SVnp::site_weight_map), s, m_data.sites.size() - 1);
-      if(!std::isfinite(m_data.sites.back().weight))
-        throw Surface_voronoi::Input_error("the weight of site " + std::to_string(m_data.sites.size() - 1) + " is not finite");
+      check_weight(m_data.sites.back().weight, m_data.sites.size() - 1);
     }
+    m_policy = choose_parameter(get_parameter(np, SVnp::coincident_sites), Surface_voronoi::Coincident_sites::REJECT);
+
+    m_settings.candidates = choose_parameter(get_parameter(np, SVnp::candidate_selection),
+                                             Surface_voronoi::Candidate_selection::PROPAGATION);
+    m_settings.repair = choose_parameter(get_parameter(np, SVnp::repair_cells), true);
+    m_settings.max_repair_rounds = choose_parameter(get_parameter(np, SVnp::max_repair_rounds), std::size_t(100));
+    CGAL_precondition_msg(m_settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
+    m_settings.has_weights = has_weights;
+    m_settings.parallel = SVi::use_threads<ConcurrencyTag>();
+    m_settings.cells_only = choose_parameter(get_parameter(np, SVnp::cells_only), false);
+    m_data.centroid_density = choose_parameter(get_parameter(np, SVnp::centroid_density), std::shared_ptr<const std::vector<double> >());
+    CGAL_precondition(!m_data.centroid_density || m_data.centroid_density->size() == m_data.mesh->number_of_vertices());
+    m_metric = &metric;
+    // the restricted Voronoi diagram's search, and Lloyd's cells-only diagrams, are compiled
+    // only where the named parameters asking for them are given (and in update())
+    constexpr bool may_select_globally = !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value;
+    constexpr bool for_relaxation = !is_default_parameter<NamedParameters, SVnp::cells_only_t>::value;
+    compute<may_select_globally, for_relaxation>(nullptr, timer);
+  }
+
+  static void check_weight(double w, std::size_t i)
+  {
+    if(!std::isfinite(w))
+      throw Surface_voronoi::Input_error("the weight of site " + std::to_string(i) + " is not finite");
+  }
+
+  // the cells of `m_data.sites`, with the propagation started from `previous` if given
+  // (embedding metrics)
+  template <bool MaySelectGlobally, bool ForRelaxation>
+  void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer)
+  {
+    namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
     if(m_data.sites.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
       throw Surface_voronoi::Input_error("too many sites");
     m_data.merged_into.assign(m_data.sites.size(), no_site);
-    const Surface_voronoi::Coincident_sites policy =
-        choose_parameter(get_parameter(np, SVnp::coincident_sites), Surface_voronoi::Coincident_sites::REJECT);
     for(const auto& pair : SVi::find_coincident_sites(*m_data.mesh, m_data.sites))
     {
-      if(policy != Surface_voronoi::Coincident_sites::MERGE)
+      if(m_policy != Surface_voronoi::Coincident_sites::MERGE)
         throw Surface_voronoi::Coincident_sites_error("sites " + std::to_string(pair.first) + " and " + std::to_string(pair.second)
                                                       + " are at the same surface point", pair.first, pair.second);
       m_data.merged_into[pair.second] = pair.first;
@@ -502,44 +652,38 @@ private:
     starts.erase(std::remove_if(starts.begin(), starts.end(),
                                 [&](const std::pair<std::size_t, std::size_t>& x) { return m_data.merged_into[x.first] != no_site; }),
                  starts.end());
-
-    SVi::Builder_settings settings;
-    settings.candidates = choose_parameter(get_parameter(np, SVnp::candidate_selection),
-                                           Surface_voronoi::Candidate_selection::PROPAGATION);
-    settings.repair = choose_parameter(get_parameter(np, SVnp::repair_cells), true);
-    settings.max_repair_rounds = choose_parameter(get_parameter(np, SVnp::max_repair_rounds), std::size_t(100));
-    CGAL_precondition_msg(settings.max_repair_rounds < 65535, "max_repair_rounds must be less than 65535");
-    settings.has_weights = has_weights;
-    settings.parallel = SVi::use_threads<ConcurrencyTag>();
-    settings.cells_only = choose_parameter(get_parameter(np, SVnp::cells_only), false);
-    m_data.centroid_density = choose_parameter(get_parameter(np, SVnp::centroid_density), std::shared_ptr<const std::vector<double> >());
-    CGAL_precondition(!m_data.centroid_density || m_data.centroid_density->size() == m_data.mesh->number_of_vertices());
-    const std::shared_ptr<const SVi::Candidate_sites> previous =
-        choose_parameter(get_parameter(np, SVnp::previous_candidates), std::shared_ptr<const SVi::Candidate_sites>());
-    if(previous && previous->number_of_faces() == m_data.mesh->number_of_faces()
-       && std::all_of(previous->sites.begin(), previous->sites.end(), [&](std::uint32_t s) { return s < m_data.sites.size(); }))
-      settings.previous = previous.get();
-    if(callback && !callback(0.05)) { cancel(); return; }
-    // the fields over the embedding's values, stored for the queries, or over the lazy metric;
-    // the restricted Voronoi diagram's search, and Lloyd's warm start and cells-only diagrams,
-    // are compiled only where the named parameters asking for them are given
-    constexpr bool may_select_globally = !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value;
-    constexpr bool for_relaxation = !is_default_parameter<NamedParameters, SVnp::cells_only_t>::value
-                                    || !is_default_parameter<NamedParameters, SVnp::previous_candidates_t>::value;
+    m_settings.previous = (previous && previous->number_of_faces() == m_data.mesh->number_of_faces()) ? previous : nullptr;
+    if(m_callback && !m_callback(0.05)) { cancel(); return; }
+    // the fields over the embedding's values, stored for the queries and the updates, or over
+    // the lazy metric
     auto build = [&](const auto& fields) {
       timer.stop("setup");
-      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, may_select_globally, for_relaxation>
-          builder(m_data, fields, settings, callback, times);
+      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation>
+          builder(m_data, fields, m_settings, m_callback, m_times);
       if(!builder.run()) cancel();
+      m_settings.previous = nullptr;   // the caller's, gone after this computation
     };
     if constexpr(SVi::Is_embedding<Metric>::value)
     {
-      CGAL_precondition_msg(!is_cancelled_metric(metric, 0), "the embedding was cancelled");
-      m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, metric, m_data.sites));
+      if(!m_data.embedding)
+      {
+        CGAL_precondition_msg(!is_cancelled_metric(*m_metric, 0), "the embedding was cancelled");
+        m_data.embedding.reset(new SVi::Embedding_values(*m_data.mesh, *m_metric, m_data.sites));
+      }
+      else
+        m_data.embedding->set_sites(*m_data.mesh, m_data.sites);
       build(*m_data.embedding);
     }
     else
-      build(SVi::Lazy_values<TriangleMesh, Metric>(*m_data.mesh, metric, m_data.sites));
+      build(SVi::Lazy_values<TriangleMesh, Metric>(*m_data.mesh, *m_metric, m_data.sites));
+  }
+
+  // the changes asked since the last computation: the sites as they are to be (empty when
+  // there is none)
+  void begin_changes()
+  {
+    CGAL_precondition_msg(m_locator != nullptr, "the update state was released");
+    if(m_next_sites.empty()) m_next_sites = m_data.sites;
   }
 
   // metrics without is_cancelled() are never cancelled (chosen by int/long, not by "...":
@@ -559,6 +703,15 @@ private:
   Vertex_point_map m_vpm;
   Geom_traits m_traits;
   Data m_data;
+  // what update() needs besides the data: how the diagram is computed, and the changes
+  Metric* m_metric = nullptr;
+  std::unique_ptr<Surface_voronoi::internal::Site_locator<TriangleMesh> > m_locator;
+  Surface_voronoi::internal::Builder_settings m_settings;
+  Surface_voronoi::Coincident_sites m_policy = Surface_voronoi::Coincident_sites::REJECT;
+  std::function<bool(double)> m_callback;
+  Surface_voronoi::internal::Stage_times* m_times = nullptr;
+  std::vector<Surface_voronoi::internal::Site> m_next_sites;
+  bool m_resized = false;   // whether sites were inserted or removed since the last computation
   mutable std::vector<Point_3> m_centroids;
   mutable std::vector<std::vector<std::size_t> > m_neighbors;
 };

@@ -84,28 +84,29 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
   }
 }
 
-// The weight of the centroids, by internal vertex index: the square of the density of sites
-// per unit area, since a centroidal Voronoi tessellation of the plane with weight w has
-// about sqrt(w) sites per unit area (Gersho); null without a density map.
+// The weight of the centroids, by vertex in the order of `vertices(tm)` (the diagram's
+// vertex indices): the square of the density of sites per unit area, since a centroidal
+// Voronoi tessellation of the plane with weight w has about sqrt(w) sites per unit area
+// (Gersho); null without a density map.
 template <class TriangleMesh, class NamedParameters>
-std::shared_ptr<const std::vector<double> > centroid_density(const Indexed_mesh<TriangleMesh>& mesh, const NamedParameters& np)
+std::shared_ptr<const std::vector<double> > centroid_density(const TriangleMesh& tm, const NamedParameters& np)
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value)
   {
-    CGAL_USE(mesh);
+    CGAL_USE(tm);
     CGAL_USE(np);
     return nullptr;
   }
   else
   {
     const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
-    auto w = std::make_shared<std::vector<double> >(mesh.number_of_vertices());
+    auto w = std::make_shared<std::vector<double> >();
     bool positive = false;
-    for(std::size_t v = 0; v < w->size(); ++v)
+    for(auto v : vertices(tm))
     {
-      const double x = double(get(density, mesh.vertex_handles[v]));
+      const double x = double(get(density, v));
       if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
-      (*w)[v] = x * x;
+      w->push_back(x * x);
       positive = positive || x > 0;
     }
     if(!positive) throw Input_error("the vertex density must not be zero everywhere");
@@ -212,41 +213,30 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   const std::function<bool(double)> callback = internal::callback_of(np);
   const std::size_t first_moving = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::first_moving_site), std::size_t(0));
 
-  // indexed once for all the diagrams (and the checks for coincident sites), or the copy the
-  // caller or the metric has
-  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> > given =
-      choose_parameter(get_parameter(np, Surface_voronoi::internal_np::shared_indexed_mesh),
-                       std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >());
-  const auto shared_mesh = internal::shared_or_new_indexed_mesh(given ? given : internal::indexed_mesh_of<TriangleMesh>(metric),
-                                                                tm, vpm, internal::use_threads<ConcurrencyTag>());
-  const internal::Indexed_mesh<TriangleMesh>& mesh = *shared_mesh;
+  // one diagram, updated after each step: it computes the cells only (no neighbours, no
+  // vertex owners), its centroids weighted by the density
+  std::size_t it = 0;
+  const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
+  const auto cells_np = internal::hooks::cells_only(true, internal::hooks::centroid_density(internal::centroid_density(tm, np), np));
+  Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
+  const internal::Indexed_mesh<TriangleMesh>& mesh = *internal::Diagram_access::data(diagram).mesh;
   internal::Nearest_point_of_cell<TriangleMesh, VPM, Geom_traits> projection(mesh, tm, vpm,
       choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
-  const std::shared_ptr<const std::vector<double> > density = internal::centroid_density(mesh, np);
 
   Lloyd_result<TriangleMesh> result;
-  std::vector<Location> previous = sites;
-  std::shared_ptr<const internal::Candidate_sites> previous_candidates;   // each diagram's propagation starts from the last's
-  for(std::size_t it = 0;; ++it)
+  for(;;)
   {
-    result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
-    const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
-    const auto cells_np = Surface_voronoi::parameters::shared_indexed_mesh(shared_mesh, Surface_voronoi::parameters::cells_only(true,
-                          Surface_voronoi::parameters::previous_candidates(previous_candidates,
-                          Surface_voronoi::parameters::centroid_density(density, np))));
-    const Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
     if(diagram.is_cancelled())
     {
       result.sites = sites;
       result.cancelled = true;
       return result;
     }
-    previous = sites;
     result.energies.push_back(diagram.energy());
     if(it == iterations) break;
-    previous_candidates = std::make_shared<const internal::Candidate_sites>(internal::Diagram_access::data(diagram).candidates);
     // the centroids projected to the surface, constructed with the geometric traits: these
     // are the locations the caller receives
+    const std::vector<Location> previous = sites;
     std::vector<typename Diagram::Point_3> moved;
     const std::vector<typename Diagram::Point_3>& centroids = diagram.cell_centroids();
     const auto& data = internal::Diagram_access::data(diagram);
@@ -272,6 +262,11 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
         sites[order[k]] = diagram.site_location(order[k]);
         ++result.kept_in_place;
       }
+    result.kept_in_place += internal::keep_sites_apart(mesh, tm, sites, previous);
+    for(std::size_t i = first_moving; i < sites.size(); ++i)
+      if(sites[i].first != previous[i].first || sites[i].second != previous[i].second) diagram.move_site(i, sites[i]);
+    ++it;
+    diagram.update();
   }
   result.sites = sites;
   return result;

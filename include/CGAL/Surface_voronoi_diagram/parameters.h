@@ -79,7 +79,6 @@ enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
 enum vertex_density_map_t { vertex_density_map };
 enum max_density_ratio_t { max_density_ratio };
 enum centroid_density_t { centroid_density };
-enum previous_candidates_t { previous_candidates };
 enum sample_border_t { sample_border };
 enum corner_angle_t { corner_angle };
 enum placed_sites_t { placed_sites };
@@ -315,19 +314,6 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_max_vertices)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(refinement_local_spacing)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stop_on_coarse_mesh)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(input_face_map)
-// An internal hook, not API: the command-line program reads stage times through it.
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
-// An internal hook, not API: the diagrams inside lloyd_relaxation() need the cells (their
-// pieces, areas, centroids and energy), not the sites' neighbours or the vertices' owners.
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
-// An internal hook, not API: lloyd_relaxation() indexes the mesh once for all its diagrams,
-// and the program once for its validation, metric, Lloyd and diagram (a std::shared_ptr to the
-// internal Indexed_mesh; used where it is a copy of the same mesh with the same points).
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
-// An internal hook, not API: validate_input() skips the checks of the halfedge structure,
-// of the faces' degrees and of the vertices' fans, which the program's reader has made on
-// the polygon soup the mesh was built from.
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_number_of_added_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(vertex_density_map)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(max_density_ratio)
@@ -335,20 +321,31 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(sample_border)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(corner_angle)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(placed_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_column_memory)
-// An internal hook, not API: lloyd_relaxation() has its diagrams weight the centroids by a
-// density (a std::shared_ptr to a std::vector<double> by internal vertex index).
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
-// An internal hook, not API: lloyd_relaxation() starts each diagram's propagation from the
-// previous diagram's candidates (a std::shared_ptr to the internal Candidate_sites, or null).
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(previous_candidates)
 // lloyd_relaxation() keeps the sites before this index in place (the sites on feature lines,
 // placed first; add_sites_for_valid_dual() relaxes only the sites it added).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)
 #endif
 
+} // namespace parameters
+
+namespace internal {
+// Named parameters of the package's own callers, not API: stage times for the program and
+// the benchmarks (a Stage_times*); one indexed copy of the mesh shared by the validation,
+// the metric and the diagram (a std::shared_ptr to an Indexed_mesh of the same mesh and
+// points); the checks of the mesh's topology skipped where a reader made them on the polygon
+// soup; and the cells-only diagrams of lloyd_relaxation(), with their centroids weighted by
+// a density (a std::shared_ptr to a std::vector<double> by vertex index).
+namespace hooks {
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
+} // namespace hooks
+} // namespace internal
+
 #undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER
 
-} // namespace parameters
 } // namespace Surface_voronoi
 } // namespace CGAL
 

@@ -346,9 +346,10 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
 
   Valid_dual_result<TriangleMesh> result;
   std::size_t first_moving = given;
+  // one diagram, updated after each round as its sites change
+  Diagram diagram(tm, metric, sites, np);
   for(;;)
   {
-    const Diagram diagram(tm, metric, sites, np);
     std::vector<typename Diagram::Point_3> points;
     std::vector<std::array<std::size_t, 3> > triangles;
     dual_triangulation(diagram, std::back_inserter(points), std::back_inserter(triangles));
@@ -443,6 +444,15 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     if(relax > 0)
       sites = lloyd_relaxation<ConcurrencyTag>(tm, metric, sites,
                   parameters::first_moving_site(first_moving, np).number_of_iterations(relax)).sites;
+    // the sites as now ordered, with the weights the map gives them at their new indices
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      if(i >= diagram.number_of_sites()) diagram.insert_site(sites[i]);
+      else if(!(diagram.site_location(i) == sites[i])) diagram.move_site(i, sites[i]);
+      if constexpr(!CGAL::parameters::is_default_parameter<CGAL_NP_CLASS, internal_np::site_weight_map_t>::value)
+        diagram.set_site_weight(i, internal::site_weight(get_parameter(np, internal_np::site_weight_map), sites[i], i));
+    }
+    diagram.update();
   }
   result.sites = sites;
   return result;

@@ -104,6 +104,13 @@ public:
             throw Input_error("the embedding of vertex " + std::to_string(v) + " has a non-finite coordinate");
       }
     }
+    set_sites(mesh, sites);
+  }
+
+  /// the sites' coordinates and weights, read again (an update of the diagram)
+  template <class TriangleMesh>
+  void set_sites(const Indexed_mesh<TriangleMesh>& mesh, const std::vector<Site>& sites)
+  {
     m_site_coordinates.assign(sites.size() * m_dimension, 0.);
     m_weights.resize(sites.size());
     for(std::size_t i = 0; i < sites.size(); ++i)

@@ -10,8 +10,8 @@
 // Author(s) : The Surface_voronoi_diagram authors
 //
 // Stage times, an internal hook and not API: the command-line program and the benchmarks
-// pass a `Stage_times` through the named parameter `stage_times` and read back the seconds
-// spent per stage; without it nothing is timed.
+// pass a `Stage_times` through the named parameter `internal::hooks::stage_times` and read
+// back the seconds spent per stage; without it nothing is timed.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STAGE_TIMES_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STAGE_TIMES_H
