@@ -1090,7 +1090,7 @@ void check_same_points(const std::vector<V3>& got, const std::vector<V3>& expect
 }
 
 const std::vector<std::string> required_stats = { "sites", "cells", "pieces", "unreached_area", "load",
-                                                  "embedding", "propagation", "cutting", "repair", "output" };
+                                                  "embedding", "propagation", "cutting", "repair", "output", "end_to_end" };
 
 } // namespace
 

@@ -466,8 +466,11 @@ Point scaled(const Point& p, int e)
   return e == 0 ? p : Point(std::ldexp(p.x(), e), std::ldexp(p.y(), e), std::ldexp(p.z(), e));
 }
 
+// the start of main(): `end_to_end` runs from there until the diagram's cells exist
+std::chrono::steady_clock::time_point program_start;
+
 template <class Diagram>
-void report(const Arguments& args, const Diagram& vd, bool power, double load, double embedding, double output,
+void report(const Arguments& args, const Diagram& vd, bool power, double end_to_end, double load, double embedding, double output,
             double insertion, std::size_t faces, const SV::internal::Stage_times& times,
             const SV::Dual_validity* dual, std::size_t sites_added)
 {
@@ -507,7 +510,8 @@ void report(const Arguments& args, const Diagram& vd, bool power, double load, d
             << "propagation: " << times["propagation"] << "\n"
             << "cutting: " << times["cutting"] << "\n"
             << "repair: " << times["repair"] << "\n"
-            << "output: " << output << std::endl;
+            << "output: " << output << "\n"
+            << "end_to_end: " << end_to_end << std::endl;
   if(args.feature_sites >= 0) std::cout << "feature_sites: " << args.feature_sites << "\n";
   if(!dual) return;
   if(args.valid_dual) std::cout << "sites_added: " << sites_added << "\n";
@@ -536,6 +540,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
           SV::internal::hooks::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)))),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
+  const double end_to_end = std::chrono::duration<double>(t0 - program_start).count();
   // the dual first: with --valid-dual, one that is not valid is an error, and no file is written
   SV::Dual_validity dual_validity;
   std::vector<Point> dual_points;
@@ -569,7 +574,7 @@ void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vec
                 << std::endl;
   }
   const double output = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  report(args, vd, !choices.weights.empty(), load, embedding, output, insertion, num_faces(mesh), times,
+  report(args, vd, !choices.weights.empty(), end_to_end, load, embedding, output, insertion, num_faces(mesh), times,
          args.dual.empty() ? nullptr : &dual_validity, sites_added);
 }
 
@@ -1064,6 +1069,7 @@ int run_main(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
+  svd_program::program_start = std::chrono::steady_clock::now();
   // A write past a file-size limit must fail with an error the program reports (exit 4), not
   // end the process before it can remove its partial file.
   std::signal(SIGXFSZ, SIG_IGN);

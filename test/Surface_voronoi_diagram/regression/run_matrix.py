@@ -60,7 +60,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 EXPECTED = os.path.join(HERE, "expected.txt")
-TIMING_KEYS = {"load", "insertion", "embedding", "setup", "propagation", "cutting", "repair", "output", "lloyd"}
+TIMING_KEYS = {"load", "insertion", "embedding", "setup", "propagation", "cutting", "repair", "output", "lloyd",
+               "end_to_end"}
 
 
 # ---------------------------------------------------------------- inputs
