@@ -347,8 +347,9 @@ private:
 
   // What the propagation reads of a face when it leaves it, in one place: across local edge
   // k, the neighbour (`none` across a breakline), where the edge's two corners are among the
-  // neighbour's corners, and the neighbour's third vertex.
-  struct Face_link
+  // neighbour's corners, and the neighbour's third vertex. Aligned so that a face's links
+  // lie in one cache line.
+  struct alignas(32) Face_link
   {
     std::uint32_t neighbor[3];
     std::uint32_t fresh_vertex[3];
