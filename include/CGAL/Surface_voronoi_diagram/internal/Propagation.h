@@ -33,8 +33,6 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
-#include <boost/heap/d_ary_heap.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -313,8 +311,7 @@ private:
   // What one order of events works with: the whole mesh's, or one block's in a round.
   struct Front
   {
-    // four children a node: a pop moves an event half as many levels down as in a binary heap
-    boost::heap::d_ary_heap<Event, boost::heap::arity<4>, boost::heap::compare<Later> > queue;
+    std::vector<Event> queue;   // a binary heap (std::push_heap), its earliest event first
     Propagation_statistics statistics;
     std::uint32_t block = 0;
     std::vector<Crossing> outbox;                        // in blocks: the fields leaving the block
@@ -571,7 +568,8 @@ private:
     if(list.size() == list.capacity()) list.reserve(2 * list.capacity());
     list.push_back(x);
     list.back().from_edge = static_cast<std::uint8_t>(x.from_edge | waiting);
-    front.queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f) });
+    front.queue.push_back(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f) });
+    std::push_heap(front.queue.begin(), front.queue.end(), Later());
   }
 
   void record_sites_before(std::size_t f)
@@ -587,8 +585,9 @@ private:
     auto& queue = front.queue;
     while(!queue.empty())
     {
-      const Event e = queue.top();
-      queue.pop();
+      std::pop_heap(queue.begin(), queue.end(), Later());
+      const Event e = queue.back();
+      queue.pop_back();
       ++front.statistics.events;
       Candidate_list& list = candidates[e.face];
       Candidate* entry = find_site(list, e.site);
@@ -621,7 +620,7 @@ private:
   static void release_queue(Front& front)
   {
     CGAL_assertion(front.queue.empty());
-    decltype(front.queue)().swap(front.queue);
+    std::vector<Event>().swap(front.queue);
   }
 
   const Mesh& m_mesh;
