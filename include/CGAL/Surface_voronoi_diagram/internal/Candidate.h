@@ -49,9 +49,9 @@ struct Candidate
   std::array<double, 3> value;
 };
 
-/// The candidates of one face: most faces have one or two,
+/// The candidates of one face: most faces have one to three,
 /// kept inline, so that a million faces are not a million heap blocks to allocate and free.
-typedef boost::container::small_vector<Candidate, 2> Candidate_list;
+typedef boost::container::small_vector<Candidate, 3> Candidate_list;
 /// One list per face.
 typedef std::vector<Candidate_list> Candidate_lists;
 

@@ -10,9 +10,9 @@
 // Author(s) : The Surface_voronoi_diagram authors
 //
 // The faces' candidate lists once they no longer change, in one array. The propagation grows
-// a list per face (`Candidate_lists`, room for two candidates inline: 88 bytes a face); most
-// faces end with one candidate, so the final lists take about half as much packed one after
-// another (32 bytes a candidate and 4 a face). Stitching and everything after it read them
+// a list per face (`Candidate_lists`, room for three candidates inline: 120 bytes a face);
+// on large meshes most faces end with one candidate, so the final lists take far less packed
+// one after another (32 bytes a candidate and 4 a face). Stitching and everything after it read them
 // here; a repair after stitching unpacks them again (`to_lists()`).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H

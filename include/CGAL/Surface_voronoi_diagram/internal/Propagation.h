@@ -30,11 +30,8 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
-
-#include <boost/heap/d_ary_heap.hpp>
 
 #include <algorithm>
 #include <array>
@@ -79,9 +76,6 @@ class Propagation
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  /// the number of times a face can be repropagated (the epoch is part of the offer keys)
-  static constexpr std::size_t max_epochs = 65536;
-
   /// The faces of a block of the first propagation, and the sites per block below which it
   /// runs in one global order: blocks of fewer cells would mostly hold fields that the
   /// neighbouring blocks' sites dominate.
@@ -125,7 +119,6 @@ public:
   void run()
   {
     make_empty_lists();
-    forget_offers();
     const std::size_t blocks = number_of_blocks();
     if(blocks > 1)
       run_in_blocks(blocks);
@@ -161,11 +154,14 @@ public:
     CGAL_precondition(previous.number_of_faces() == nf);
     make_empty_lists();
     for(std::size_t f = 0; f < nf; ++f)
+    {
+      candidates[f].reserve(previous.first[f + 1] - previous.first[f]);
       for(std::uint32_t i = previous.first[f]; i < previous.first[f + 1]; ++i)
       {
         CGAL_precondition(previous.sites[i] < m_site_faces.size());
         candidates[f].push_back(Candidate(previous.sites[i], field_values(previous.sites[i], f), unreached));
       }
+    }
     // every site's field from its own face (and those of a site on a breakline)
     std::vector<std::vector<std::size_t> > extra_starts(m_site_faces.size());
     for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
@@ -232,20 +228,11 @@ public:
       }
     }
     for(const Candidate_list& list : candidates) statistics.admitted += list.size();
-    m_offers_complete = false;   // a repair marks the candidates as offered (restore_offers())
   }
 
-  /// Frees what a repair's propagation reads besides the candidates (the faces' links and
-  /// what was offered to them: tens of bytes per face), for the stages that do not need it;
-  /// `repropagate()` builds it again.
-  void release_working_state()
-  {
-    std::vector<Face_link>().swap(m_links);
-    decltype(m_epoch)().swap(m_epoch);
-    decltype(m_offers)().swap(m_offers);
-    m_front.offered = Flat_hash_table<Key_slot<std::uint64_t> >();
-    m_offers_complete = false;
-  }
+  /// Frees what a repair's propagation reads besides the candidates (the faces' links: tens
+  /// of bytes per face), for the stages that do not need it; `repropagate()` builds it again.
+  void release_working_state() { std::vector<Face_link>().swap(m_links); }
 
   /// After the repair banned (site, face) pairs: the banned candidates are removed from the
   /// `dirty` faces, whose lists are then refilled from their neighbours' candidates, and the
@@ -257,7 +244,6 @@ public:
   {
     if(m_links.size() != m_mesh.number_of_faces())   // released
       link_faces();
-    if(!m_offers_complete) restore_offers();
     std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
     m_sites_before = sites_before;
     for(std::size_t f : dirty)
@@ -266,14 +252,10 @@ public:
       if(!is_touched[f]) record_sites_before(f);
       list.erase(std::remove_if(list.begin(), list.end(), [&](const Candidate& x) { return banned(x.site, f); }),
                  list.end());
-      CGAL_assertion(m_epoch[f] + 1 < max_epochs);
-      ++m_epoch[f];   // forget what was offered to f: everything may be offered again
-      m_offers[f].count = 0;
       is_touched[f] = 1;
     }
     for(std::size_t f : dirty)
     {
-      for(const Candidate& x : candidates[f]) mark_offered(m_front, x.site, f);
       for(int k = 0; k < 3; ++k)
       {
         const std::uint32_t g = m_links[f].neighbor[k];
@@ -300,23 +282,13 @@ public:
   }
 
 private:
-  // Small, so that the heap moves little memory: the field values wait in a slot of
-  // `Front::values` (computed once: a lazy metric's values can be expensive), recycled when
-  // taken.
+  // Small, so that the heap moves little memory: the field's values wait in the face's list,
+  // as a candidate marked `waiting` (computed once: a lazy metric's values can be expensive).
   struct Event
   {
     double key;
     std::uint32_t site;
     std::uint32_t face;
-    std::uint32_t slot;
-    std::uint8_t from_edge;   // the candidate's (in the padding: the event stays 24 bytes)
-  };
-  // The sites offered to a face in its current epoch: the first few inline (a face is
-  // offered a handful), the others in a hash table keyed by (site, face, epoch).
-  struct Offers
-  {
-    std::array<std::uint32_t, 5> site;
-    std::uint32_t count = 0;
   };
   struct Later
   {
@@ -339,32 +311,27 @@ private:
   // What one order of events works with: the whole mesh's, or one block's in a round.
   struct Front
   {
-    // four children a node: a pop moves an event half as many levels down as in a binary heap
-    boost::heap::d_ary_heap<Event, boost::heap::arity<4>, boost::heap::compare<Later> > queue;
-    std::vector<std::array<double, 3> > values;
-    std::vector<std::uint32_t> free_slots;
-    Flat_hash_table<Key_slot<std::uint64_t> > offered;   // the offers beyond a face's inline ones
+    std::vector<Event> queue;   // a binary heap (std::push_heap), its earliest event first
     Propagation_statistics statistics;
     std::uint32_t block = 0;
     std::vector<Crossing> outbox;                        // in blocks: the fields leaving the block
   };
 
-  std::uint64_t key(std::uint32_t site, std::size_t face) const
-  {
-    return (std::uint64_t(site) * m_mesh.number_of_faces() + face) * max_epochs + m_epoch[face];
-  }
+  // A site is offered to a face once: the face's list holds it from the offer on, marked
+  // `waiting` until its event is taken from the queue. An offer dominated on arrival or when
+  // taken leaves nothing, and the same offer again is dominated again (lists only grow, and
+  // dominance is transitive), so the list alone tells whether to offer, in a line of memory the
+  // dominance check reads anyway.
+  static constexpr std::uint8_t waiting = 0x80;   // a flag in `from_edge`
 
-  // records that `site` was offered to `f` in its current epoch; false if it already was
-  bool mark_offered(Front& front, std::uint32_t site, std::size_t f)
+  static bool is_waiting(const Candidate& x) { return (x.from_edge & waiting) != 0; }
+
+  // whether a candidate of `list` taken from the queue dominates `x`
+  static bool dominated_in(const Candidate_list& list, const Candidate& x)
   {
-    Offers& o = m_offers[f];
-    const std::size_t inline_count = (std::min)(std::size_t(o.count), o.site.size());
-    for(std::size_t i = 0; i < inline_count; ++i)
-      if(o.site[i] == site) return false;
-    if(o.count >= o.site.size() && !front.offered.insert(key(site, f)).second) return false;
-    if(o.count < o.site.size()) o.site[o.count] = site;
-    ++o.count;
-    return true;
+    for(const Candidate& b : list)
+      if(!is_waiting(b) && dominates(b, x)) return true;
+    return false;
   }
 
   std::array<double, 3> field_values(std::uint32_t site, std::size_t f) const
@@ -377,8 +344,9 @@ private:
 
   // What the propagation reads of a face when it leaves it, in one place: across local edge
   // k, the neighbour (`none` across a breakline), where the edge's two corners are among the
-  // neighbour's corners, and the neighbour's third vertex.
-  struct Face_link
+  // neighbour's corners, and the neighbour's third vertex. Aligned so that a face's links
+  // lie in one cache line.
+  struct alignas(32) Face_link
   {
     std::uint32_t neighbor[3];
     std::uint32_t fresh_vertex[3];
@@ -451,28 +419,6 @@ private:
     }
   }
 
-  // What was offered to a face and is not among its candidates was dominated by them, and
-  // stays dominated while the face is not repaired (its list only grows, and dominance is
-  // transitive): marking the candidates alone as offered lets the repair admit exactly the
-  // fields the kept state would have.
-  void restore_offers()
-  {
-    forget_offers();
-    for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
-      for(const Candidate& x : candidates[f]) mark_offered(m_front, x.site, f);
-    m_offers_complete = true;
-  }
-
-  // every face in epoch 0, nothing offered to it
-  void forget_offers()
-  {
-    const std::size_t nf = m_mesh.number_of_faces();
-    m_epoch.assign(nf, 0);
-    m_offers.assign(nf, Offers());
-    m_front.offered.reset(nf / 8 + 16);
-    m_offers_complete = true;
-  }
-
   // `candidates` becomes an empty list per face
   void make_empty_lists()
   {
@@ -510,11 +456,7 @@ private:
     std::vector<std::size_t> faces_of(count, 0);
     for(std::uint32_t b : m_block_of) ++faces_of[b];
     std::vector<Front> fronts(count);
-    for(std::size_t b = 0; b < count; ++b)
-    {
-      fronts[b].block = static_cast<std::uint32_t>(b);
-      fronts[b].offered.reset(faces_of[b] / 8 + 16);
-    }
+    for(std::size_t b = 0; b < count; ++b) fronts[b].block = static_cast<std::uint32_t>(b);
     // the sites' starts, each in its face's block, in site order
     std::vector<std::vector<std::pair<std::uint32_t, std::size_t> > > starts(count);
     for(std::size_t i = 0; i < m_site_faces.size(); ++i)
@@ -547,7 +489,7 @@ private:
         Front& front = fronts[b];
         for(const Crossing& c : inbox[b])
         {
-          if(!mark_offered(front, c.site, c.face)) continue;
+          if(find_site(candidates[c.face], c.site)) continue;   // offered before
           Candidate x(c.site, c.value, static_cast<std::uint8_t>((c.fresh + 1) % 3));
           x.value[c.fresh] = m_fields.value(c.site, m_mesh.triangles[c.face][c.fresh]);
           queue_unless_dominated(front, x, c.face);
@@ -560,14 +502,13 @@ private:
     statistics.blocks = count;
     statistics.rounds = rounds;
     std::vector<std::uint32_t>().swap(m_block_of);
-    m_offers_complete = false;   // the blocks' tables of offers went with their fronts
   }
 
-  // Offers the field of `site` to face `f`, once per (site, face) and epoch, as brought across
-  // local edge `from_edge` of f.
+  // Offers the field of `site` to face `f`, unless offered before, as brought across local
+  // edge `from_edge` of f.
   void offer(Front& front, std::uint32_t site, std::size_t f, std::uint8_t from_edge)
   {
-    if(!mark_offered(front, site, f)) return;
+    if(find_site(candidates[f], site)) return;
     Candidate x(site, field_values(site, f), from_edge);
     queue_unless_dominated(front, x, f);
   }
@@ -591,7 +532,7 @@ private:
       front.outbox.push_back(c);
       return;
     }
-    if(!mark_offered(front, from.site, f)) return;
+    if(find_site(candidates[f], from.site)) return;
     queue_unless_dominated(front, carried_across(from, l, k), f);
   }
 
@@ -620,28 +561,22 @@ private:
   void queue_unless_dominated(Front& front, const Candidate& x, std::size_t f)
   {
     // lists only grow: a field dominated now stays dominated, so do not queue it
-    for(const Candidate& b : candidates[f])
-      if(dominates(b, x)) { ++front.statistics.pruned; return; }
-    std::uint32_t slot;
-    if(front.free_slots.empty())
-    {
-      slot = static_cast<std::uint32_t>(front.values.size());
-      front.values.push_back(x.value);
-    }
-    else
-    {
-      slot = front.free_slots.back();
-      front.free_slots.pop_back();
-      front.values[slot] = x.value;
-    }
-    front.queue.push(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f),
-                            slot, x.from_edge });
+    Candidate_list& list = candidates[f];
+    if(dominated_in(list, x)) { ++front.statistics.pruned; return; }
+    // past the inline room, the room doubles (boost's growth factor would reallocate at
+    // every candidate of the usual three or four)
+    if(list.size() == list.capacity()) list.reserve(2 * list.capacity());
+    list.push_back(x);
+    list.back().from_edge = static_cast<std::uint8_t>(x.from_edge | waiting);
+    front.queue.push_back(Event{ (std::min)((std::min)(x.value[0], x.value[1]), x.value[2]), x.site, static_cast<std::uint32_t>(f) });
+    std::push_heap(front.queue.begin(), front.queue.end(), Later());
   }
 
   void record_sites_before(std::size_t f)
   {
     if(m_sites_before)
-      for(const Candidate& x : candidates[f]) m_sites_before->push_back(x.site);
+      for(const Candidate& x : candidates[f])
+        if(!is_waiting(x)) m_sites_before->push_back(x.site);
   }
 
   template <class Banned>
@@ -650,17 +585,16 @@ private:
     auto& queue = front.queue;
     while(!queue.empty())
     {
-      const Event e = queue.top();
-      queue.pop();
+      std::pop_heap(queue.begin(), queue.end(), Later());
+      const Event e = queue.back();
+      queue.pop_back();
       ++front.statistics.events;
-      const Candidate x(e.site, front.values[e.slot], e.from_edge);
-      front.free_slots.push_back(e.slot);
       Candidate_list& list = candidates[e.face];
-      bool pruned = false;
-      for(const Candidate& b : list)
-        if(dominates(b, x)) { pruned = true; break; }
-      if(pruned)
+      Candidate* entry = find_site(list, e.site);
+      CGAL_assertion(entry != nullptr && is_waiting(*entry));
+      if(dominated_in(list, *entry))
       {
+        list.erase(list.begin() + (entry - list.data()));
         ++front.statistics.pruned;
         continue;
       }
@@ -669,7 +603,8 @@ private:
         record_sites_before(e.face);
         (*touched)[e.face] = 1;
       }
-      list.push_back(x);
+      entry->from_edge = static_cast<std::uint8_t>(entry->from_edge & ~waiting);
+      const Candidate x = *entry;
       ++front.statistics.admitted;
       const Face_link& l = m_links[e.face];
       for(int k = 0; k < 3; ++k)
@@ -685,9 +620,7 @@ private:
   static void release_queue(Front& front)
   {
     CGAL_assertion(front.queue.empty());
-    decltype(front.queue)().swap(front.queue);
-    std::vector<std::array<double, 3> >().swap(front.values);
-    std::vector<std::uint32_t>().swap(front.free_slots);
+    std::vector<Event>().swap(front.queue);
   }
 
   const Mesh& m_mesh;
@@ -698,9 +631,6 @@ private:
   bool m_parallel;
   std::size_t m_faces_per_block = faces_per_block, m_sites_per_block = sites_per_block;
   std::vector<Face_link> m_links;   // the breaklines are in them: no link across one
-  std::vector<std::uint32_t> m_epoch;   // both built in forget_offers()
-  std::vector<Offers> m_offers;
-  bool m_offers_complete = true;    // false after a run in blocks: `m_offers` misses their tables
   Front m_front;                    // the global order's (the first propagation's without blocks, the repair's)
   std::vector<std::uint32_t> m_block_of;   // during a run in blocks
   std::vector<std::uint32_t>* m_sites_before = nullptr;   // during repropagate()
