@@ -103,36 +103,37 @@ std::vector<double> face_areas(const TriangleMesh& tm, const VertexPointMap& vpm
   return area;
 }
 
+template <class NamedParameters>
+using Has_density = std::integral_constant<bool,
+    !CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value>;
+
 // The density of `np`'s vertex_density_map at the corners of each face of `fs`, in the order
 // of a face location's barycentric coordinates; empty without a density map.
 template <class TriangleMesh, class Face, class NamedParameters>
 std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh& tm, const std::vector<Face>& fs,
-                                                          const NamedParameters& np, std::true_type)
+                                                          const NamedParameters& np)
 {
-  const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
   std::vector<std::array<double, 3> > out;
-  out.reserve(fs.size());
-  for(auto f : fs)
+  if constexpr(Has_density<NamedParameters>::value)
   {
-    const auto h = halfedge(f, tm);
-    const std::array<double, 3> d = {{ double(get(density, source(h, tm))), double(get(density, target(h, tm))),
-                                       double(get(density, target(next(h, tm), tm))) }};
-    // checked in every build: a density that is not a number or negative would make the
-    // drawing by rejection loop forever
-    for(double x : d)
-      if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
-    out.push_back(d);
+    const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
+    out.reserve(fs.size());
+    for(auto f : fs)
+    {
+      const auto h = halfedge(f, tm);
+      const std::array<double, 3> d = {{ double(get(density, source(h, tm))), double(get(density, target(h, tm))),
+                                         double(get(density, target(next(h, tm), tm))) }};
+      // checked in every build: a density that is not a number or negative would make the
+      // drawing by rejection loop forever
+      for(double x : d)
+        if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
+      out.push_back(d);
+    }
   }
   return out;
 }
-template <class TriangleMesh, class Face, class NamedParameters>
-std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh&, const std::vector<Face>&,
-                                                          const NamedParameters&, std::false_type)
-{
-  return std::vector<std::array<double, 3> >();
-}
 
-// The corner densities of each location's face (the density map must be given).
+// The corner densities of each location's face (empty without a density map).
 template <class TriangleMesh, class Location, class NamedParameters>
 std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh& tm, const std::vector<Location>& locations,
                                                               const NamedParameters& np)
@@ -140,12 +141,8 @@ std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs;
   fs.reserve(locations.size());
   for(const Location& l : locations) fs.push_back(l.first);
-  return face_corner_densities(tm, fs, np, std::true_type());
+  return face_corner_densities(tm, fs, np);
 }
-
-template <class NamedParameters>
-using Has_density = std::integral_constant<bool,
-    !CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value>;
 
 inline double density_at(const std::array<double, 3>& d, const std::array<double, 3>& b)
 {
@@ -216,7 +213,7 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
     total = double(cumulative.size());
   }
   // with a density: faces drawn by area times mean density, points in them by rejection
-  const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+  const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np);
   if(!density.empty())
   {
     double previous = 0, weighted = 0;
@@ -335,7 +332,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   std::vector<double> radius_scale(all, 1.);
   if constexpr(internal::Has_density<CGAL_NP_CLASS>::value)
   {
-    const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+    const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np);
     double mass = 0;
     for(std::size_t k = 0; k < fs.size(); ++k)
       mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;
