@@ -247,7 +247,7 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   // the area, or the integral of the density, and the density at the vertices of the lines
   const std::vector<face_descriptor> fs(faces(tm).begin(), faces(tm).end());
   const std::vector<std::array<double, 3> > corner_density =
-      internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+      internal::face_corner_densities(tm, fs, np);
   double mass = 0;
   for(std::size_t k = 0; k < fs.size(); ++k)
   {

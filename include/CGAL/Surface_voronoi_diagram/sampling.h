@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <set>
 #include <type_traits>
 #include <utility>
@@ -77,57 +78,62 @@ double scaled_face_area(const TriangleMesh& tm, const VertexPointMap& vpm, Face 
                        scaled_point(to_point_d(get(vpm, target(next(h, tm), tm))), e));
 }
 
-// The cumulative areas of the faces `fs` measured on the points scaled by
-// 2^-coordinate_exponent(), faces without a positive finite area counting 0; if no face has
-// one, every face counts 1. Returns the total, always positive and finite.
+// The areas of the faces `fs`, and the exponent `e` of the scaling they were measured at:
+// on the points as they are (`e == 0`) when their total is positive and finite, otherwise on
+// the points scaled by 2^-e, e = coordinate_exponent(), faces without a positive finite area
+// counting 0 (the total may still be 0).
 template <class TriangleMesh, class VertexPointMap, class Face>
-double scaled_cumulative_areas(const TriangleMesh& tm, const VertexPointMap& vpm, const std::vector<Face>& fs,
-                               std::vector<double>& cumulative)
+std::vector<double> face_areas(const TriangleMesh& tm, const VertexPointMap& vpm, const std::vector<Face>& fs, int& e)
 {
-  const int e = coordinate_exponent(tm, vpm);
-  cumulative.clear();
+  std::vector<double> area(fs.size());
   double total = 0;
-  for(auto f : fs)
+  for(std::size_t k = 0; k < fs.size(); ++k)
   {
-    const double a = scaled_face_area(tm, vpm, f, -e);
-    total += (a > 0 && std::isfinite(a)) ? a : 0.;
-    cumulative.push_back(total);
+    area[k] = scaled_face_area(tm, vpm, fs[k], 0);
+    total += area[k];
   }
-  if(total > 0 && std::isfinite(total)) return total;
-  for(std::size_t k = 0; k < cumulative.size(); ++k) cumulative[k] = double(k + 1);
-  return double(cumulative.size());
+  e = 0;
+  if(total > 0 && std::isfinite(total)) return area;
+  e = coordinate_exponent(tm, vpm);
+  for(std::size_t k = 0; k < fs.size(); ++k)
+  {
+    const double a = scaled_face_area(tm, vpm, fs[k], -e);
+    area[k] = (a > 0 && std::isfinite(a)) ? a : 0.;
+  }
+  return area;
 }
+
+template <class NamedParameters>
+using Has_density = std::integral_constant<bool,
+    !CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value>;
 
 // The density of `np`'s vertex_density_map at the corners of each face of `fs`, in the order
 // of a face location's barycentric coordinates; empty without a density map.
 template <class TriangleMesh, class Face, class NamedParameters>
 std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh& tm, const std::vector<Face>& fs,
-                                                          const NamedParameters& np, std::true_type)
+                                                          const NamedParameters& np)
 {
-  const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
   std::vector<std::array<double, 3> > out;
-  out.reserve(fs.size());
-  for(auto f : fs)
+  if constexpr(Has_density<NamedParameters>::value)
   {
-    const auto h = halfedge(f, tm);
-    const std::array<double, 3> d = {{ double(get(density, source(h, tm))), double(get(density, target(h, tm))),
-                                       double(get(density, target(next(h, tm), tm))) }};
-    // checked in every build: a density that is not a number or negative would make the
-    // drawing by rejection loop forever
-    for(double x : d)
-      if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
-    out.push_back(d);
+    const auto density = CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
+    out.reserve(fs.size());
+    for(auto f : fs)
+    {
+      const auto h = halfedge(f, tm);
+      const std::array<double, 3> d = {{ double(get(density, source(h, tm))), double(get(density, target(h, tm))),
+                                         double(get(density, target(next(h, tm), tm))) }};
+      // checked in every build: a density that is not a number or negative would make the
+      // drawing by rejection loop forever
+      for(double x : d)
+        if(!(std::isfinite(x) && x >= 0)) throw Input_error("the vertex densities must be finite and not negative");
+      out.push_back(d);
+    }
   }
   return out;
 }
-template <class TriangleMesh, class Face, class NamedParameters>
-std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh&, const std::vector<Face>&,
-                                                          const NamedParameters&, std::false_type)
-{
-  return std::vector<std::array<double, 3> >();
-}
 
-// The corner densities of each location's face (the density map must be given).
+// The corner densities of each location's face (empty without a density map).
 template <class TriangleMesh, class Location, class NamedParameters>
 std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh& tm, const std::vector<Location>& locations,
                                                               const NamedParameters& np)
@@ -135,12 +141,8 @@ std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs;
   fs.reserve(locations.size());
   for(const Location& l : locations) fs.push_back(l.first);
-  return face_corner_densities(tm, fs, np, std::true_type());
+  return face_corner_densities(tm, fs, np);
 }
-
-template <class NamedParameters>
-using Has_density = std::integral_constant<bool,
-    !CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value>;
 
 inline double density_at(const std::array<double, 3>& d, const std::array<double, 3>& b)
 {
@@ -197,22 +199,21 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
   CGAL::Random rng(choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u));
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
   CGAL_precondition_msg(!fs.empty(), "the mesh is empty (no faces)");
-  std::vector<double> cumulative;
-  cumulative.reserve(fs.size());
-  double total = 0;
-  for(auto f : fs)
-  {
-    total += internal::scaled_face_area(tm, vpm, f, 0);
-    cumulative.push_back(total);
-  }
   // Drawing in [0, total) loops forever for a total of 0 and recurses without end for an
   // infinite one (Boost's uniform_real): outside the documented coordinate range, areas are
   // measured on the points scaled by a power of two (the same distribution), and a mesh
   // without any measurable area is sampled by face index.
-  if(!(total > 0) || !std::isfinite(total))
-    total = internal::scaled_cumulative_areas(tm, vpm, fs, cumulative);
+  int e;
+  std::vector<double> cumulative = internal::face_areas(tm, vpm, fs, e);
+  std::partial_sum(cumulative.begin(), cumulative.end(), cumulative.begin());
+  double total = cumulative.back();
+  if(!(total > 0 && std::isfinite(total)))
+  {
+    for(std::size_t k = 0; k < cumulative.size(); ++k) cumulative[k] = double(k + 1);
+    total = double(cumulative.size());
+  }
   // with a density: faces drawn by area times mean density, points in them by rejection
-  const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+  const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np);
   if(!density.empty())
   {
     double previous = 0, weighted = 0;
@@ -318,26 +319,10 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   points.reserve(m);
   // the faces' areas, kept for the density's integral below
   const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
-  std::vector<double> face_area(fs.size());
-  double area = 0;
-  for(std::size_t k = 0; k < fs.size(); ++k)
-  {
-    face_area[k] = internal::scaled_face_area(tm, vpm, fs[k], 0);
-    area += face_area[k];
-  }
   // outside the documented coordinate range, on the points scaled by a power of two
-  int e = 0;
-  if(!(area > 0) || !std::isfinite(area))
-  {
-    e = internal::coordinate_exponent(tm, vpm);
-    area = 0;
-    for(std::size_t k = 0; k < fs.size(); ++k)
-    {
-      const double a = internal::scaled_face_area(tm, vpm, fs[k], -e);
-      face_area[k] = (a > 0 && std::isfinite(a)) ? a : 0.;
-      area += face_area[k];
-    }
-  }
+  int e;
+  const std::vector<double> face_area = internal::face_areas(tm, vpm, fs, e);
+  double area = std::accumulate(face_area.begin(), face_area.end(), 0.);
   for(const Location& l : candidates)
     points.push_back(internal::scaled_point(
         CGAL::Polygon_mesh_processing::construct_point(l, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(K())), -e));
@@ -347,7 +332,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   std::vector<double> radius_scale(all, 1.);
   if constexpr(internal::Has_density<CGAL_NP_CLASS>::value)
   {
-    const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np, internal::Has_density<CGAL_NP_CLASS>());
+    const std::vector<std::array<double, 3> > density = internal::face_corner_densities(tm, fs, np);
     double mass = 0;
     for(std::size_t k = 0; k < fs.size(); ++k)
       mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;

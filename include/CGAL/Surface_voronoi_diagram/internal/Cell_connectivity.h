@@ -25,6 +25,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
+#include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
@@ -381,9 +382,7 @@ private:
     const double* lo = (s < t ? list[owner] : list[v.other]).value.data();
     const double* hi = (s < t ? list[v.other] : list[owner]).value.data();
     const int ca = m_mesh.corner_of(f, va), cb = m_mesh.corner_of(f, vb);
-    const double da = lo[ca] - hi[ca], db = lo[cb] - hi[cb];
-    const double u = da / (da - db);
-    return (std::min)(1., (std::max)(0., u));
+    return edge_crossing_parameter(lo, hi, ca, cb);
   }
 
   const Mesh& m_mesh;

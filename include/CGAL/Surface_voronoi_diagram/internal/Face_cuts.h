@@ -29,6 +29,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/iterator/transform_iterator.hpp>
 #include <boost/range/iterator_range.hpp>
 
 #include <cstddef>
@@ -73,35 +75,14 @@ public:
     boost::iterator_range<const Piece_edge_support*> supports;
   };
 
-  /// the pieces of one face
-  class Pieces
+  /// the piece of a chunk by its index there
+  struct Piece_at
   {
-  public:
-    class iterator
-    {
-    public:
-      iterator(const Pieces* p, std::size_t i) : m_pieces(p), m_index(i) {}
-      Piece operator*() const { return (*m_pieces)[m_index]; }
-      iterator& operator++() { ++m_index; return *this; }
-      bool operator!=(const iterator& o) const { return m_index != o.m_index; }
-      bool operator==(const iterator& o) const { return m_index == o.m_index; }
-
-    private:
-      const Pieces* m_pieces;
-      std::size_t m_index;
-    };
-
-    Pieces(const Chunk* chunk, std::size_t first, std::size_t count) : m_chunk(chunk), m_first(first), m_count(count) {}
-    std::size_t size() const { return m_count; }
-    bool empty() const { return m_count == 0; }
-    Piece operator[](std::size_t i) const { return piece(*m_chunk, m_first + i); }
-    iterator begin() const { return iterator(this, 0); }
-    iterator end() const { return iterator(this, m_count); }
-
-  private:
-    const Chunk* m_chunk;   // null for a face without pieces
-    std::size_t m_first, m_count;
+    const Chunk* chunk;   // null for a face without pieces
+    Piece operator()(std::size_t p) const { return piece(*chunk, p); }
   };
+  /// the pieces of one face
+  typedef boost::iterator_range<boost::transform_iterator<Piece_at, boost::counting_iterator<std::size_t> > > Pieces;
 
   /// one face's cut, as `Face_cut` has it
   struct Cut
@@ -116,7 +97,9 @@ public:
   Cut operator[](std::size_t f) const
   {
     const Face_record& r = m_faces[f];
-    return Cut{ Pieces(r.number_of_pieces == 0 ? nullptr : &m_chunks[r.chunk], r.first_piece, r.number_of_pieces), r.degenerate != 0,
+    const Piece_at at{ r.number_of_pieces == 0 ? nullptr : &m_chunks[r.chunk] };
+    const boost::counting_iterator<std::size_t> first(r.first_piece), last(r.first_piece + r.number_of_pieces);
+    return Cut{ Pieces(boost::make_transform_iterator(first, at), boost::make_transform_iterator(last, at)), r.degenerate != 0,
                 r.whole_face != 0 };
   }
 
@@ -170,12 +153,9 @@ public:
 
 private:
   // what a chunk of faces cut: records with offsets into its own arrays
-  struct Buffer
+  struct Buffer : Chunk
   {
     std::vector<std::pair<std::size_t, Face_record> > faces;
-    std::vector<Piece_record> pieces;
-    std::vector<Symbolic_vertex> vertices;
-    std::vector<Piece_edge_support> supports;
     Face_cut scratch;   // one face's cut, its storage reused face after face
 
     void clear()
@@ -224,10 +204,7 @@ private:
   {
     CGAL_precondition_msg(b.vertices.size() < std::size_t(0xffffffffu) && b.pieces.size() < std::size_t(0xffffffffu),
                           "too many cut pieces for 32-bit offsets");
-    Chunk& chunk = m_chunks[c];
-    chunk.pieces.assign(b.pieces.begin(), b.pieces.end());
-    chunk.vertices.assign(b.vertices.begin(), b.vertices.end());
-    chunk.supports.assign(b.supports.begin(), b.supports.end());
+    m_chunks[c] = static_cast<const Chunk&>(b);   // its pieces, vertices and supports
     for(const auto& fr : b.faces)
     {
       Face_record r = fr.second;

@@ -232,11 +232,7 @@ private:
     const Slot* s = front.values.find(v);
     return (s && s->accepted()) ? s->value() : std::numeric_limits<double>::quiet_NaN();
   }
-  static bool is_accepted(const Front& front, std::uint32_t v)
-  {
-    const Slot* s = front.values.find(v);
-    return s && s->accepted();
-  }
+  static bool is_accepted(const Front& front, std::uint32_t v) { return !std::isnan(accepted_value(front, v)); }
 
   void update_around(Front& front, std::uint32_t a, double da)
   {

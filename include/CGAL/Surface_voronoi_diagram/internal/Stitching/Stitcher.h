@@ -41,6 +41,8 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -273,14 +275,7 @@ private:
   {
     bool operator()(const Exact_location& x, const Exact_location& y) const
     {
-      if(x.kind != y.kind) return x.kind < y.kind;
-      if(x.element != y.element) return x.element < y.element;
-      for(int k = 0; k < 3; ++k)
-      {
-        if(x.c[k] < y.c[k]) return true;
-        if(y.c[k] < x.c[k]) return false;
-      }
-      return false;
+      return std::tie(x.kind, x.element, x.c) < std::tie(y.kind, y.element, y.c);
     }
   };
 
@@ -334,7 +329,7 @@ private:
     if(!m_keep_keys) return;
     Partition& out = *m_out;
     m_representative.resize(out.vertices.size());
-    for(std::size_t id = 0; id < m_representative.size(); ++id) m_representative[id] = id;
+    std::iota(m_representative.begin(), m_representative.end(), std::size_t(0));
     std::map<Exact_location, std::size_t, Exact_location_less> groups;
     std::vector<std::uint8_t> seen(m_origins.size(), 0);
     for(std::size_t f = 0; f < nf; ++f)
