@@ -36,9 +36,10 @@ namespace internal {
 class Face_grid
 {
 public:
-  /// `corner(f, k)`: corner k of face f, a `Point_d` with finite coordinates
+  /// `corner(f, k)`: corner k of face f, a `Point_d` with finite coordinates; cells at least
+  /// `smallest_cell` wide
   template <class Corner>
-  Face_grid(std::size_t number_of_faces, const Corner& corner) : m_faces(number_of_faces)
+  Face_grid(std::size_t number_of_faces, const Corner& corner, double smallest_cell = 0) : m_faces(number_of_faces)
   {
     double extent = 0;
     for(std::size_t f = 0; f < m_faces; ++f)
@@ -54,7 +55,7 @@ public:
     if(m_faces == 0) return;
     // cells about the size of a face, but not more than a few per face
     const double volume = (m_high[0] - m_low[0]) * (m_high[1] - m_low[1]) * (m_high[2] - m_low[2]);
-    m_h = (std::max)({ extent / double(m_faces), std::cbrt(volume / (4. * double(m_faces))), 1e-300 });
+    m_h = (std::max)({ extent / double(m_faces), std::cbrt(volume / (4. * double(m_faces))), smallest_cell, 1e-300 });
     for(;; m_h *= 1.25)
     {
       double cells = 1;
@@ -140,6 +141,24 @@ public:
       }
     }
     return best;
+  }
+
+  /// Calls `f(i)` for every item `i` stored in a cell that meets the box [lo, hi]
+  /// (clamped to the grid), and for the items spanning many cells.
+  template <class Function>
+  void for_each_near(const Point_d& lo, const Point_d& hi, const Function& f) const
+  {
+    for(std::uint32_t i : m_large) f(i);
+    if(m_faces == 0) return;
+    std::array<std::size_t, 3> a, b;
+    for(int k = 0; k < 3; ++k) a[k] = cell(lo[k], k), b[k] = cell(hi[k], k);
+    for(std::size_t z = a[2]; z <= b[2]; ++z)
+      for(std::size_t y = a[1]; y <= b[1]; ++y)
+        for(std::size_t x = a[0]; x <= b[0]; ++x)
+        {
+          const std::size_t c = x + m_n[0] * (y + m_n[1] * z);
+          for(std::size_t j = m_begin[c]; j < m_begin[c + 1]; ++j) f(m_entries[j]);
+        }
   }
 
 private:
