@@ -33,6 +33,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
+#include <set>
 #include <random>
 #include <sstream>
 #include <cstdint>
@@ -659,6 +661,73 @@ TEST_CASE("IO build: isolated points are counted and dropped, errors keep file i
                       "vertex 7 has a non-finite coordinate (nan)");
   // The failed call did not touch the mesh.
   CHECK(faces(mesh).size() == 12);
+}
+
+// The program builds a Surface_mesh from a checked soup itself, in linear time: it must be the
+// mesh CGAL's builder gives, element for element, for the outputs' indices to stay the same.
+TEST_CASE("IO build: a Surface_mesh is built exactly as polygon_soup_to_polygon_mesh builds it", "[io][mesh]")
+{
+  auto same_connectivity = [](const Surface_mesh& a, const Surface_mesh& b) {
+    REQUIRE(a.number_of_vertices() == b.number_of_vertices());
+    REQUIRE(a.number_of_halfedges() == b.number_of_halfedges());
+    REQUIRE(a.number_of_faces() == b.number_of_faces());
+    std::size_t differ = 0;
+    for(Surface_mesh::Halfedge_index h : a.halfedges())
+      differ += (a.next(h) != b.next(h) || a.prev(h) != b.prev(h) || a.target(h) != b.target(h) || a.face(h) != b.face(h));
+    for(Surface_mesh::Vertex_index v : a.vertices()) differ += (a.halfedge(v) != b.halfedge(v) || a.point(v) != b.point(v));
+    for(Surface_mesh::Face_index f : a.faces()) differ += (a.halfedge(f) != b.halfedge(f));
+    CHECK(differ == 0);
+    CHECK(b.is_valid(false));
+  };
+  // closed and bordered surfaces, several components, faces and corners in random orders
+  svd_test::meshes::internal::Soup soup = svd_test::meshes::internal::icosphere(3, 1.0);
+  Surface_mesh torus;
+  svd_test::meshes::make_torus(torus, 3, 1, 24, 12);
+  std::map<Surface_mesh::Vertex_index, std::size_t> index;
+  for(Surface_mesh::Vertex_index v : torus.vertices())
+    index[v] = soup.add_point({{ torus.point(v).x() + 5, torus.point(v).y(), torus.point(v).z() }});
+  std::mt19937 random(7);
+  std::set<std::size_t> beside_a_hole;
+  for(Surface_mesh::Face_index f : torus.faces())
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(Surface_mesh::Vertex_index v : CGAL::vertices_around_face(torus.halfedge(f), torus)) t[k++] = index[v];
+    // holes of one face, no two at a vertex (which would make it non-manifold)
+    if(random() % 3 == 0 && std::none_of(t.begin(), t.end(), [&](std::size_t v) { return beside_a_hole.count(v); }))
+      beside_a_hole.insert(t.begin(), t.end());
+    else
+      soup.triangles.push_back(t);
+  }
+  for(int trial = 0; trial < 4; ++trial)
+  {
+    std::vector<Point> points;
+    for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+    Polygons polygons;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    for(std::array<std::size_t, 3> t : soup.triangles)
+    {
+      std::rotate(t.begin(), t.begin() + random() % 3, t.end());
+      triangles.push_back(t);
+    }
+    std::shuffle(triangles.begin(), triangles.end(), random);
+    // a valid soup uses every point: drop the torus's points its holes left alone
+    std::vector<std::size_t> renumber(points.size(), std::size_t(-1));
+    std::vector<Point> used;
+    for(auto& t : triangles)
+      for(std::size_t& v : t)
+      {
+        if(renumber[v] == std::size_t(-1)) renumber[v] = used.size(), used.push_back(points[v]);
+        v = renumber[v];
+      }
+    for(const auto& t : triangles) polygons.push_back({ t[0], t[1], t[2] });
+    Surface_mesh expected, built;
+    PMP::polygon_soup_to_polygon_mesh(used, triangles, expected);
+    const SVIO::Mesh_reading_report report = SVIO::build_checked_triangle_mesh(used, polygons, built);
+    REQUIRE(!report.reoriented);
+    REQUIRE(!CGAL::is_closed(built));
+    same_connectivity(expected, built);
+  }
 }
 
 // ---------------------------------------------------------- reading files

@@ -45,6 +45,7 @@
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -769,6 +770,97 @@ void check_polygon_soup(const std::vector<Point_3>& points,
   internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
 }
 
+namespace internal {
+
+// A triangle soup that is an oriented manifold surface without isolated points, built into
+// `mesh` as polygon_soup_to_polygon_mesh() builds it.
+template <class Point_3, class TriangleMesh>
+void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
+                                  const std::vector<std::array<std::size_t, 3>>& triangles, TriangleMesh& mesh)
+{
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+}
+
+// The same for a Surface_mesh, in linear time and with the same indices of every element and
+// the same halfedge of every face and vertex: each triangle in turn creates the edges not
+// created before (the halfedge from its corner i to i+1 first), its halfedge is the one from
+// corner 2 to 0; a vertex's halfedge is its incoming border halfedge, or else its incoming
+// halfedge in the last triangle around it. The soup's checks rule out every case in which
+// CGAL::Euler::add_face() relinks.
+template <class Point_3, class P>
+void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
+                                  const std::vector<std::array<std::size_t, 3>>& triangles, CGAL::Surface_mesh<P>& mesh)
+{
+  typedef CGAL::Surface_mesh<P> Mesh;
+  typedef typename Mesh::Halfedge_index H;
+  typedef typename Mesh::size_type Size;
+  const std::size_t corners = 3 * triangles.size(), none = corners;
+  if(corners >= std::size_t((std::numeric_limits<Size>::max)()) / 2)
+    return CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  // corner c = 3 t + i stands for the halfedge from corner i to corner i + 1 of triangle t;
+  // its twin is the corner of the halfedge back
+  std::vector<Size> begin(points.size() + 1, 0);
+  std::vector<std::pair<Size, Size>> leaving(corners);   // (head, corner) by tail
+  for(const auto& t : triangles)
+    for(std::size_t v : t) ++begin[v + 1];
+  for(std::size_t v = 0; v < points.size(); ++v) begin[v + 1] += begin[v];
+  {
+    std::vector<Size> fill(begin.begin(), begin.end() - 1);
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      for(std::size_t i = 0; i < 3; ++i)
+        leaving[fill[triangles[t][i]]++] = { Size(triangles[t][(i + 1) % 3]), Size(3 * t + i) };
+  }
+  std::vector<Size> twin(corners, Size(none));
+  for(std::size_t u = 0; u < points.size(); ++u)
+    for(Size j = begin[u]; j < begin[u + 1]; ++j)
+    {
+      const std::size_t w = leaving[j].first;
+      for(Size k = begin[w]; k < begin[w + 1]; ++k)
+        if(leaving[k].first == u) twin[leaving[j].second] = leaving[k].second;
+    }
+  std::vector<std::pair<Size, Size>>().swap(leaving);
+  std::vector<Size>().swap(begin);
+  // each corner's halfedge: a new edge's first halfedge, or the twin's opposite
+  std::vector<H> halfedge_of(corners);
+  Size edges = 0;
+  for(std::size_t c = 0; c < corners; ++c)
+    halfedge_of[c] = (twin[c] < c) ? H(Size(halfedge_of[twin[c]]) ^ 1) : H(2 * edges++);
+  mesh.resize(Size(points.size()), edges, Size(triangles.size()));
+  for(std::size_t v = 0; v < points.size(); ++v) mesh.point(typename Mesh::Vertex_index(Size(v))) = P(points[v]);
+  std::vector<H> leaving_border(points.size());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const typename Mesh::Face_index f(static_cast<Size>(t));
+    mesh.set_halfedge(f, halfedge_of[3 * t + 2]);
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t c = 3 * t + i;
+      const H h = halfedge_of[c];
+      const typename Mesh::Vertex_index u(Size(triangles[t][i])), w(Size(triangles[t][(i + 1) % 3]));
+      mesh.set_target(h, w);
+      mesh.set_next(h, halfedge_of[3 * t + (i + 1) % 3]);
+      mesh.set_face(h, f);
+      mesh.set_halfedge(w, h);
+      if(twin[c] == none)
+      {
+        mesh.set_target(mesh.opposite(h), u);
+        mesh.set_face(mesh.opposite(h), Mesh::null_face());
+        leaving_border[Size(w)] = mesh.opposite(h);
+      }
+    }
+  }
+  // each border vertex has one incoming and one outgoing border halfedge; the incoming one is its halfedge
+  for(std::size_t c = 0; c < corners; ++c)
+    if(twin[c] == none)
+    {
+      const H b = mesh.opposite(halfedge_of[c]);
+      mesh.set_next(b, leaving_border[Size(mesh.target(b))]);
+      mesh.set_halfedge(mesh.target(b), b);
+    }
+}
+
+} // namespace internal
+
 /// Builds a triangle mesh from a polygon soup held in memory, after checking it
 /// with `check_polygon_soup()`.
 ///
@@ -886,7 +978,7 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
     throw Input_error("the mesh cannot be oriented consistently (it is not an orientable manifold surface)");
 
   CGAL::clear(mesh);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(kept_points, triangles, mesh);
+  internal::build_oriented_triangle_mesh(kept_points, triangles, mesh);
   report.number_of_triangles = triangles.size();
   return report;
 }
