@@ -371,27 +371,27 @@ void parse_off(const char* data, std::size_t size, std::vector<Point_3>& points,
     if(!in.next_record())
       throw Input_error(line_text(in.lines_seen()) + "the file ends after " + std::to_string(f) + " of the " +
                         std::to_string(nf) + " faces the header declares");
-    const std::string face = "face " + std::to_string(f);
+    auto face = [f] { return "face " + std::to_string(f); };   // built only for a message
     in.next_token(token);
     std::uint64_t degree = 0;
     const Number_read r = read_unsigned(token, degree);
     if(r == Number_read::not_a_number)
-      throw Input_error(line_text(in.line()) + face + ": the number of vertices " + quoted_token(token) +
+      throw Input_error(line_text(in.line()) + face() + ": the number of vertices " + quoted_token(token) +
                         " is not a non-negative integer");
     const std::size_t available = in.tokens_left();
     if(r == Number_read::out_of_range || degree > available)
     {
       const std::string declared = r == Number_read::out_of_range ? printable_text(token, max_echoed_token_length)
                                                                   : std::to_string(degree);
-      throw Input_error(line_text(in.line()) + face + " declares " + declared + " vertices but " +
+      throw Input_error(line_text(in.line()) + face() + " declares " + declared + " vertices but " +
                         (in.only_blank_left() ? "the file ends after " : "its line holds only ") +
                         std::to_string(available));
     }
     if(degree < 3)
-      throw Input_error(line_text(in.line()) + face + " has " + std::to_string(degree) +
+      throw Input_error(line_text(in.line()) + face() + " has " + std::to_string(degree) +
                         " vertices (a face needs at least 3)");
     if(degree > max_polygon_corners)
-      throw Input_error(line_text(in.line()) + face + " has " + std::to_string(degree) +
+      throw Input_error(line_text(in.line()) + face() + " has " + std::to_string(degree) +
                         " vertices; the largest polygon accepted has " + std::to_string(max_polygon_corners));
     std::vector<std::size_t> polygon(static_cast<std::size_t>(degree));
     for(std::size_t& v : polygon)
@@ -400,10 +400,10 @@ void parse_off(const char* data, std::size_t size, std::vector<Point_3>& points,
       std::uint64_t index = 0;
       const Number_read ri = read_unsigned(token, index);
       if(ri == Number_read::not_a_number)
-        throw Input_error(line_text(in.line()) + face + ": vertex index " + quoted_token(token) +
+        throw Input_error(line_text(in.line()) + face() + ": vertex index " + quoted_token(token) +
                           " is not a non-negative integer");
       if(ri == Number_read::out_of_range || index >= nv)
-        throw Input_error(line_text(in.line()) + face + ": vertex index " +
+        throw Input_error(line_text(in.line()) + face() + ": vertex index " +
                           printable_text(token, max_echoed_token_length) + " is out of range (the file has " +
                           vertices_text(nv) + ")");
       v = static_cast<std::size_t>(index);

@@ -443,20 +443,23 @@ void check_soup_elements(const std::vector<Point_3>& points,
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
     const std::vector<std::size_t>& polygon = polygons[f];
-    const std::string face = "face " + std::to_string(f);
+    auto face = [f] { return "face " + std::to_string(f); };   // built only for a message
     if(polygon.size() < 3)
-      throw Input_error(face + " has fewer than 3 vertices");
+      throw Input_error(face() + " has fewer than 3 vertices");
     for(std::size_t v : polygon)
       if(v >= points.size())
-        throw Input_error(face + " references vertex " + std::to_string(v) + " but the mesh has " +
+        throw Input_error(face() + " references vertex " + std::to_string(v) + " but the mesh has " +
                           std::to_string(points.size()) + " vertices");
-    sorted.assign(polygon.begin(), polygon.end());
-    std::sort(sorted.begin(), sorted.end());
-    const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
-    if(repeated != sorted.end())
-      throw Input_error(face + " repeats vertex " + std::to_string(*repeated));
+    if(polygon.size() > 3 || polygon[0] == polygon[1] || polygon[1] == polygon[2] || polygon[2] == polygon[0])
+    {
+      sorted.assign(polygon.begin(), polygon.end());
+      std::sort(sorted.begin(), sorted.end());
+      const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+      if(repeated != sorted.end())
+        throw Input_error(face() + " repeats vertex " + std::to_string(*repeated));
+    }
     if(has_all_corners_collinear(points, polygon))
-      throw Input_error(face + " has zero area");
+      throw Input_error(face() + " has zero area");
   }
 }
 
@@ -772,11 +775,64 @@ void check_polygon_soup(const std::vector<Point_3>& points,
 
 namespace internal {
 
+// The halfedges of a triangle soup paired: corner c = 3 t + i stands for the halfedge from
+// corner i to corner i + 1 of triangle t, and twins[c] is the corner of the halfedge back
+// (3 x the number of triangles on a border). Empty unless the soup is an oriented manifold
+// surface: an edge in one direction twice or in more than two triangles, or a vertex whose
+// triangles form several fans, is left to check_soup_topology() to name.
+template <class TriangleRange>
+std::vector<std::uint32_t> oriented_manifold_twins(const TriangleRange& triangles, std::size_t number_of_points)
+{
+  const std::size_t corners = 3 * triangles.size();
+  const std::size_t largest = std::size_t((std::numeric_limits<std::uint32_t>::max)());
+  if(corners >= largest || number_of_points >= largest) return {};
+  const std::uint32_t none = std::uint32_t(corners);
+  auto corner_at = [&](std::size_t c) { return std::size_t(triangles[c / 3][c % 3]); };
+  auto prev = [](std::uint32_t c) { return c - c % 3 + (c + 2) % 3; };
+  // the corners of each vertex, with the vertex their halfedge leads to
+  std::vector<std::uint32_t> begin(number_of_points + 1, 0);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> leaving(corners);   // (head, corner)
+  for(std::size_t c = 0; c < corners; ++c) ++begin[corner_at(c) + 1];
+  for(std::size_t v = 0; v < number_of_points; ++v) begin[v + 1] += begin[v];
+  {
+    std::vector<std::uint32_t> fill(begin.begin(), begin.end() - 1);
+    for(std::size_t c = 0; c < corners; ++c)
+      leaving[fill[corner_at(c)]++] = { std::uint32_t(corner_at(c - c % 3 + (c + 1) % 3)), std::uint32_t(c) };
+  }
+  std::vector<std::uint32_t> twins(corners, none);
+  for(std::size_t u = 0; u < number_of_points; ++u)
+    for(std::uint32_t j = begin[u]; j < begin[u + 1]; ++j)
+    {
+      const std::uint32_t w = leaving[j].first;
+      std::size_t back = 0, again = 0;
+      for(std::uint32_t k = begin[w]; k < begin[w + 1]; ++k)
+        if(leaving[k].first == u) ++back, twins[leaving[j].second] = leaving[k].second;
+      for(std::uint32_t k = begin[u]; k < begin[u + 1]; ++k) again += (leaving[k].first == w);
+      if(back > 1 || again > 1) return {};
+    }
+  // one fan per vertex: its corners, turned through the twins (c to twins[prev(c)]), are one
+  // chain from the corner without a twin, or one cycle
+  for(std::size_t v = 0; v < number_of_points; ++v)
+  {
+    const std::uint32_t n = begin[v + 1] - begin[v];
+    std::uint32_t start = n == 0 ? none : leaving[begin[v]].second, starts = 0;
+    for(std::uint32_t j = begin[v]; j < begin[v + 1]; ++j)
+      if(twins[leaving[j].second] == none) start = leaving[j].second, ++starts;
+    if(starts > 1) return {};
+    std::uint32_t count = 0;
+    for(std::uint32_t c = start; c != none && count <= n; c = twins[prev(c)])
+      if(++count > 1 && c == start) { --count; break; }
+    if(count != n) return {};
+  }
+  return twins;
+}
+
 // A triangle soup that is an oriented manifold surface without isolated points, built into
 // `mesh` as polygon_soup_to_polygon_mesh() builds it.
 template <class Point_3, class TriangleMesh>
 void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
-                                  const std::vector<std::array<std::size_t, 3>>& triangles, TriangleMesh& mesh)
+                                  const std::vector<std::array<std::size_t, 3>>& triangles,
+                                  const std::vector<std::uint32_t>&, TriangleMesh& mesh)
 {
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
 }
@@ -789,42 +845,21 @@ void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
 // CGAL::Euler::add_face() relinks.
 template <class Point_3, class P>
 void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
-                                  const std::vector<std::array<std::size_t, 3>>& triangles, CGAL::Surface_mesh<P>& mesh)
+                                  const std::vector<std::array<std::size_t, 3>>& triangles,
+                                  std::vector<std::uint32_t> twins, CGAL::Surface_mesh<P>& mesh)
 {
   typedef CGAL::Surface_mesh<P> Mesh;
   typedef typename Mesh::Halfedge_index H;
   typedef typename Mesh::size_type Size;
   const std::size_t corners = 3 * triangles.size(), none = corners;
-  if(corners >= std::size_t((std::numeric_limits<Size>::max)()) / 2)
+  if(twins.empty()) twins = oriented_manifold_twins(triangles, points.size());
+  if(twins.empty() || corners >= std::size_t((std::numeric_limits<Size>::max)()) / 2)
     return CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
-  // corner c = 3 t + i stands for the halfedge from corner i to corner i + 1 of triangle t;
-  // its twin is the corner of the halfedge back
-  std::vector<Size> begin(points.size() + 1, 0);
-  std::vector<std::pair<Size, Size>> leaving(corners);   // (head, corner) by tail
-  for(const auto& t : triangles)
-    for(std::size_t v : t) ++begin[v + 1];
-  for(std::size_t v = 0; v < points.size(); ++v) begin[v + 1] += begin[v];
-  {
-    std::vector<Size> fill(begin.begin(), begin.end() - 1);
-    for(std::size_t t = 0; t < triangles.size(); ++t)
-      for(std::size_t i = 0; i < 3; ++i)
-        leaving[fill[triangles[t][i]]++] = { Size(triangles[t][(i + 1) % 3]), Size(3 * t + i) };
-  }
-  std::vector<Size> twin(corners, Size(none));
-  for(std::size_t u = 0; u < points.size(); ++u)
-    for(Size j = begin[u]; j < begin[u + 1]; ++j)
-    {
-      const std::size_t w = leaving[j].first;
-      for(Size k = begin[w]; k < begin[w + 1]; ++k)
-        if(leaving[k].first == u) twin[leaving[j].second] = leaving[k].second;
-    }
-  std::vector<std::pair<Size, Size>>().swap(leaving);
-  std::vector<Size>().swap(begin);
   // each corner's halfedge: a new edge's first halfedge, or the twin's opposite
   std::vector<H> halfedge_of(corners);
   Size edges = 0;
   for(std::size_t c = 0; c < corners; ++c)
-    halfedge_of[c] = (twin[c] < c) ? H(Size(halfedge_of[twin[c]]) ^ 1) : H(2 * edges++);
+    halfedge_of[c] = (twins[c] < c) ? H(Size(halfedge_of[twins[c]]) ^ 1) : H(2 * edges++);
   mesh.resize(Size(points.size()), edges, Size(triangles.size()));
   for(std::size_t v = 0; v < points.size(); ++v) mesh.point(typename Mesh::Vertex_index(Size(v))) = P(points[v]);
   std::vector<H> leaving_border(points.size());
@@ -841,7 +876,7 @@ void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
       mesh.set_next(h, halfedge_of[3 * t + (i + 1) % 3]);
       mesh.set_face(h, f);
       mesh.set_halfedge(w, h);
-      if(twin[c] == none)
+      if(twins[c] == none)
       {
         mesh.set_target(mesh.opposite(h), u);
         mesh.set_face(mesh.opposite(h), Mesh::null_face());
@@ -851,7 +886,7 @@ void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
   }
   // each border vertex has one incoming and one outgoing border halfedge; the incoming one is its halfedge
   for(std::size_t c = 0; c < corners; ++c)
-    if(twin[c] == none)
+    if(twins[c] == none)
     {
       const H b = mesh.opposite(halfedge_of[c]);
       mesh.set_next(b, leaving_border[Size(mesh.target(b))]);
@@ -890,8 +925,13 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
                                                 TriangleMesh& mesh)
 {
   internal::check_soup_elements(points, polygons);
+  // a soup of triangles is checked by pairing its halfedges, which the mesh is built from;
+  // the full check names what is wrong, or orients and triangulates
+  std::vector<std::uint32_t> twins;
+  if(std::all_of(polygons.begin(), polygons.end(), [](const std::vector<std::size_t>& p) { return p.size() == 3; }))
+    twins = internal::oriented_manifold_twins(polygons, points.size());
   bool consistently_oriented =
-      internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
+      !twins.empty() || internal::check_soup_topology(polygons, internal::Face_namer(nullptr, std::string()));
 
   Mesh_reading_report report;
   report.number_of_points = points.size();
@@ -978,7 +1018,8 @@ Mesh_reading_report build_checked_triangle_mesh(const std::vector<Point_3>& poin
     throw Input_error("the mesh cannot be oriented consistently (it is not an orientable manifold surface)");
 
   CGAL::clear(mesh);
-  internal::build_oriented_triangle_mesh(kept_points, triangles, mesh);
+  if(report.polygons_triangulated > 0 || report.reoriented) twins.clear();
+  internal::build_oriented_triangle_mesh(kept_points, triangles, twins, mesh);
   report.number_of_triangles = triangles.size();
   return report;
 }
