@@ -364,11 +364,20 @@ Location locate_near(const Point& p, Mesh::Face_index start, const Mesh& mesh)
   };
   Mesh::Face_index best = start;
   Point best_point = k.construct_projected_point_3_object()(triangle(start), p);
+  const double best_d2 = CGAL::squared_distance(p, best_point);
   for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(start), mesh))
     for(Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
     {
       if(f == Mesh::null_face() || f == start) continue;
-      const Point q = k.construct_projected_point_3_object()(triangle(f), p);
+      // a face whose plane is clearly farther than the best point cannot be nearer (the
+      // margin covers the rounding of the distances and of the points' coordinates)
+      const K::Triangle_3 t = triangle(f);
+      const K::Vector_3 n = CGAL::cross_product(t[1] - t[0], t[2] - t[0]), pt = p - t[0];
+      const double n2 = n.squared_length(), plane2 = CGAL::square(n * pt) / n2;
+      const double margin = 1e-12 * ((p - CGAL::ORIGIN).squared_length() + pt.squared_length() + (t[1] - t[0]).squared_length()
+                                     + (t[2] - t[0]).squared_length());
+      if(n2 > 0 && plane2 > best_d2 + margin) continue;
+      const Point q = k.construct_projected_point_3_object()(t, p);
       const CGAL::Comparison_result c = k.compare_distance_3_object()(p, q, best_point);
       if(c == CGAL::SMALLER || (c == CGAL::EQUAL && f < best)) { best = f; best_point = q; }
     }
