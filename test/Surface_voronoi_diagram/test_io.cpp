@@ -730,6 +730,40 @@ TEST_CASE("IO build: a Surface_mesh is built exactly as polygon_soup_to_polygon_
   }
 }
 
+// A triangle soup is checked by pairing its halfedges on the way to the mesh; whatever that
+// pairing refuses must get the full check's verdict, and the soups it passes must be valid.
+TEST_CASE("IO build: triangle soups get the full check's verdict", "[io][mesh]")
+{
+  const std::vector<Point> points = { Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0), Point(0.5, -1, 0), Point(0.5, 0, 1),
+                                      Point(2, 0, 0), Point(2, 1, 0) };
+  Polygons two_fans;   // a bowtie: two triangles meeting at vertex 1 only
+  two_fans = { { 0, 1, 2 }, { 1, 5, 6 } };
+  Polygons tetrahedron;
+  add_tetrahedron(tetrahedron, 0, 1, 2, 4);
+  const std::vector<Polygons> soups = {
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } },   // three triangles on an edge
+    { { 0, 1, 2 }, { 0, 1, 3 } },                // an edge twice in one direction: re-oriented
+    { { 0, 1, 2 }, { 0, 1, 2 } },                // a triangle twice
+    { { 0, 1, 2 }, { 2, 1, 0 } },                // a triangle and its reverse
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 0, 2 } },   // an edge in four triangles
+    two_fans, tetrahedron
+  };
+  for(const Polygons& soup : soups)
+  {
+    std::string expected, got;
+    try { SVIO::check_polygon_soup(points, soup); }
+    catch(const SVIO::Input_error& e) { expected = e.what(); }
+    Surface_mesh mesh;
+    try
+    {
+      SVIO::build_checked_triangle_mesh(points, soup, mesh);
+      CHECK(CGAL::is_valid_polygon_mesh(mesh));
+    }
+    catch(const SVIO::Input_error& e) { got = e.what(); }
+    CHECK(got == expected);
+  }
+}
+
 // ---------------------------------------------------------- reading files
 
 TEMPLATE_TEST_CASE("IO read: OFF, OBJ, STL and PLY files give the closed cube", "[io][mesh][file]",

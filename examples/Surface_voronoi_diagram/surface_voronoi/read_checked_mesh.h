@@ -803,12 +803,13 @@ std::vector<std::uint32_t> oriented_manifold_twins(const TriangleRange& triangle
   for(std::size_t u = 0; u < number_of_points; ++u)
     for(std::uint32_t j = begin[u]; j < begin[u + 1]; ++j)
     {
+      // an edge twice in one direction has two halfedges back, or none and then two corners
+      // without a twin at its tail, which the fans below refuse
       const std::uint32_t w = leaving[j].first;
-      std::size_t back = 0, again = 0;
+      std::size_t back = 0;
       for(std::uint32_t k = begin[w]; k < begin[w + 1]; ++k)
         if(leaving[k].first == u) ++back, twins[leaving[j].second] = leaving[k].second;
-      for(std::uint32_t k = begin[u]; k < begin[u + 1]; ++k) again += (leaving[k].first == w);
-      if(back > 1 || again > 1) return {};
+      if(back > 1) return {};
     }
   // one fan per vertex: its corners, turned through the twins (c to twins[prev(c)]), are one
   // chain from the corner without a twin, or one cycle
