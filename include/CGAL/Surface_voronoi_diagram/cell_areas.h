@@ -1,0 +1,165 @@
+// Copyright (c) 2026 The Surface_voronoi_diagram authors.
+// All rights reserved.
+//
+// This file is part of the Surface_voronoi_diagram package for CGAL (www.cgal.org).
+//
+// $URL$
+// $Id$
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : The Surface_voronoi_diagram authors
+//
+// Cells of prescribed area are semi-discrete optimal transport: the areas are the gradient of
+// a concave function of the power weights, so a damped Newton iteration converges from any
+// weights that leave no cell empty (Kitagawa, Merigot and Thibert).
+
+#ifndef CGAL_SURFACE_VORONOI_DIAGRAM_CELL_AREAS_H
+#define CGAL_SURFACE_VORONOI_DIAGRAM_CELL_AREAS_H
+
+#include <CGAL/license/Surface_voronoi_diagram.h>
+
+#include <CGAL/Surface_voronoi_diagram/bisector_polylines.h>
+#include <CGAL/Surface_voronoi_diagram/exceptions.h>
+#include <CGAL/Surface_voronoi_diagram/power_weights.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <vector>
+#ifdef SVD_AREAS_DEBUG
+#include <iostream>
+#endif
+
+namespace CGAL {
+namespace Surface_voronoi {
+
+/// \ingroup PkgSurfaceVoronoiDiagramFunctions
+/// What `fit_power_weights_to_areas()` reached.
+struct Area_fit_result
+{
+  /// the number of Newton steps taken
+  std::size_t iterations = 0;
+  /// the number of calls to the diagram's `update()`, line search included
+  std::size_t updates = 0;
+  /// the largest of the cells' \f$ |a_i - t_i| / t_i \f$ at the end
+  double max_relative_error = 0;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramFunctions
+/// Sets the power weights of the sites of `diagram` (with `set_site_weight()` and `update()`)
+/// so that the area of the cell of every site `i` comes within `tolerance`, relative, of
+/// `target_areas[i]`.
+///
+/// A damped Newton iteration: the derivative of the area of cell `i` in the weight of a
+/// neighbour `j` is minus the length of their common boundary divided by the norm of the
+/// gradient of the difference of their squared distances, taken as twice the distance between
+/// the sites times the ratio of the metric's squared distances to squared lengths around them
+/// (exact for the Euclidean embedding; see `weight_for_length()`). A step that empties a cell
+/// or does not lower the error is halved.
+///
+/// \tparam Diagram a `Surface_voronoi_diagram` whose update state was not released
+/// \tparam Metric the type of the metric the diagram was constructed with
+/// \param diagram the diagram; its weights are the starting point, and its cells must not
+///        be empty
+/// \param metric the metric the diagram was constructed with
+/// \param target_areas one positive area per site, adding up to the area the sites reach
+///        (`surface_area() - unreached_area()`)
+/// \param tolerance the largest relative error accepted
+/// \param max_iterations the most Newton steps taken
+/// \returns the steps taken and the largest relative error reached, which is above
+///          `tolerance` if `max_iterations` steps did not reach it
+/// \throws Input_error if `target_areas` does not have one positive area per site
+template <class Diagram, class Metric>
+Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
+                                           const std::vector<double>& target_areas,
+                                           double tolerance = 0.01, std::size_t max_iterations = 50)
+{
+  const std::size_t n = diagram.number_of_sites();
+  if(target_areas.size() != n || *std::min_element(target_areas.begin(), target_areas.end()) <= 0)
+    throw Input_error("fit_power_weights_to_areas: one positive target area per site is needed");
+  Area_fit_result result;
+  Eigen::VectorXd gap(n), weights(n), scale(n);
+  auto measure = [&]() { // the gap to the targets, and the L2 norm of the relative gap
+    double norm = 0;
+    result.max_relative_error = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      gap[i] = target_areas[i] - diagram.cell_area(i);
+      norm += CGAL::square(gap[i] / target_areas[i]);
+      result.max_relative_error = (std::max)(result.max_relative_error, std::abs(gap[i]) / target_areas[i]);
+    }
+    return std::sqrt(norm);
+  };
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    weights[i] = diagram.site_weight(i);
+    scale[i] = std::sqrt(weight_for_length(metric, diagram.site_location(i), 1.));
+  }
+  double error = measure();
+  std::vector<Bisector_polyline<typename Diagram::Point_3> > boundaries;
+  while(result.max_relative_error > tolerance && result.iterations < max_iterations)
+  {
+    ++result.iterations;
+    boundaries.clear();
+    bisector_polylines(diagram, std::back_inserter(boundaries));
+    std::vector<Eigen::Triplet<double> > entries;
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+    for(const auto& b : boundaries)
+    {
+      const std::size_t i = b.sites[0], j = b.sites[1];
+      if(j >= n) continue;   // against area no site reaches: no weight moves it
+      double length = 0;
+      for(std::size_t k = 1; k < b.points.size(); ++k)
+        length += std::sqrt(CGAL::squared_distance(b.points[k - 1], b.points[k]));
+      const double h = length / (2 * std::sqrt(CGAL::squared_distance(diagram.site_point(i), diagram.site_point(j)))
+                                 * scale[i] * scale[j]);
+      entries.emplace_back(int(i), int(j), -h);
+      entries.emplace_back(int(j), int(i), -h);
+      diagonal[i] += h;
+      diagonal[j] += h;
+    }
+    // the weights are defined up to a constant: a small shift makes the Laplacian definite
+    const double shift = 1e-9 * diagonal.maxCoeff();
+    for(std::size_t i = 0; i < n; ++i) entries.emplace_back(int(i), int(i), diagonal[i] + shift);
+    Eigen::SparseMatrix<double> hessian(n, n);
+    hessian.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver(hessian);
+    Eigen::VectorXd step = solver.solve(gap);
+    step.array() -= step.mean();   // the diagram does not change with a constant added
+#ifdef SVD_AREAS_DEBUG
+    std::cerr << "it " << result.iterations << " err " << error << " max " << result.max_relative_error << " gapsum " << gap.sum() << " step " << step.minCoeff() << " " << step.maxCoeff() << " w " << weights.minCoeff() << " " << weights.maxCoeff() << " res " << (hessian * step - gap).norm() / gap.norm() << "\n";
+#endif
+    for(double fraction = 1;; fraction /= 2)
+    {
+      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i] + fraction * step[i]);
+      diagram.update();
+      ++result.updates;
+      const double e = measure();
+#ifdef SVD_AREAS_DEBUG
+      std::cerr << "  fraction " << fraction << " err " << e << " max " << result.max_relative_error << " empty " << diagram.statistics().empty_cells << " broken " << diagram.statistics().broken_cells_before_repair << " " << diagram.statistics().broken_cells << " rounds " << diagram.statistics().repair_rounds << "\n";
+#endif
+      if(diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error)
+      {
+        error = e;
+        break;
+      }
+      if(fraction < 1. / 1024)   // no progress along the step: back to the last weights
+      {
+        for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i]);
+        diagram.update();
+        measure();
+        return result;
+      }
+    }
+    for(std::size_t i = 0; i < n; ++i) weights[i] = diagram.site_weight(i);
+  }
+  return result;
+}
+
+} // namespace Surface_voronoi
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_VORONOI_DIAGRAM_CELL_AREAS_H
