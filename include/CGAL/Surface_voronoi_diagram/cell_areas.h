@@ -29,9 +29,6 @@
 #include <cstddef>
 #include <iterator>
 #include <vector>
-#ifdef SVD_AREAS_DEBUG
-#include <iostream>
-#endif
 
 namespace CGAL {
 namespace Surface_voronoi {
@@ -129,30 +126,30 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver(hessian);
     Eigen::VectorXd step = solver.solve(gap);
     step.array() -= step.mean();   // the diagram does not change with a constant added
-#ifdef SVD_AREAS_DEBUG
-    std::cerr << "it " << result.iterations << " err " << error << " max " << result.max_relative_error << " gapsum " << gap.sum() << " step " << step.minCoeff() << " " << step.maxCoeff() << " w " << weights.minCoeff() << " " << weights.maxCoeff() << " res " << (hessian * step - gap).norm() / gap.norm() << "\n";
-#endif
-    for(double fraction = 1;; fraction /= 2)
-    {
-      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i] + fraction * step[i]);
-      diagram.update();
-      ++result.updates;
-      const double e = measure();
-#ifdef SVD_AREAS_DEBUG
-      std::cerr << "  fraction " << fraction << " err " << e << " max " << result.max_relative_error << " empty " << diagram.statistics().empty_cells << " broken " << diagram.statistics().broken_cells_before_repair << " " << diagram.statistics().broken_cells << " rounds " << diagram.statistics().repair_rounds << "\n";
-#endif
-      if(diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error)
+    // Newton's step, then, where a cell's derivatives are too far off for it, each cell's
+    // own step on its own (the diagonal of the Hessian)
+    const Eigen::VectorXd own = (gap.array() / (diagonal.array() + shift)).matrix();
+    bool done = false;
+    for(int kind = 0; kind < 2 && !done; ++kind)
+      for(double fraction = 1; fraction >= 1. / 64; fraction /= 2)
       {
-        error = e;
-        break;
-      }
-      if(fraction < 1. / 1024)   // no progress along the step: back to the last weights
-      {
-        for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i]);
+        for(std::size_t i = 0; i < n; ++i)
+          diagram.set_site_weight(i, weights[i] + fraction * (kind == 0 ? step[i] : own[i]));
         diagram.update();
-        measure();
-        return result;
+        ++result.updates;
+        const double e = measure();
+        if((done = diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error))
+        {
+          error = e;
+          break;
+        }
       }
+    if(!done)   // no progress either way: back to the last weights
+    {
+      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i]);
+      diagram.update();
+      measure();
+      return result;
     }
     for(std::size_t i = 0; i < n; ++i) weights[i] = diagram.site_weight(i);
   }
