@@ -60,7 +60,8 @@ struct Area_fit_result
 /// \tparam Diagram a `Surface_voronoi_diagram` whose update state was not released
 /// \tparam Metric the type of the metric the diagram was constructed with
 /// \param diagram the diagram; its weights are the starting point, and its cells must not
-///        be empty
+///        be empty. Construct it with `Surface_voronoi::parameters::repair_cells(false)`: a
+///        repair moves pieces between cells, so that the areas jump as the weights move.
 /// \param metric the metric the diagram was constructed with
 /// \param target_areas one positive area per site, adding up to the area the sites reach
 ///        (`surface_area() - unreached_area()`)
