@@ -33,7 +33,7 @@
 namespace CGAL {
 namespace Surface_voronoi {
 
-/// \ingroup PkgSurfaceVoronoiDiagramFunctions
+/// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// What `fit_power_weights_to_areas()` reached.
 struct Area_fit_result
 {
@@ -45,7 +45,7 @@ struct Area_fit_result
   double max_relative_error = 0;
 };
 
-/// \ingroup PkgSurfaceVoronoiDiagramFunctions
+/// \ingroup PkgSurfaceVoronoiDiagramMetrics
 /// Sets the power weights of the sites of `diagram` (with `set_site_weight()` and `update()`)
 /// so that the area of the cell of every site `i` comes within `tolerance`, relative, of
 /// `target_areas[i]`.
