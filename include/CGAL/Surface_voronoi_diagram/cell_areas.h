@@ -50,18 +50,22 @@ struct Area_fit_result
 /// so that the area of the cell of every site `i` comes within `tolerance`, relative, of
 /// `target_areas[i]`.
 ///
-/// A damped Newton iteration: the derivative of the area of cell `i` in the weight of a
-/// neighbour `j` is minus the length of their common boundary divided by the norm of the
-/// gradient of the difference of their squared distances, taken as twice the distance between
-/// the sites times the ratio of the metric's squared distances to squared lengths around them
-/// (exact for the Euclidean embedding; see `weight_for_length()`). A step that empties a cell
-/// or does not lower the error is halved.
+/// A damped Newton iteration on the weights (Kitagawa, Merigot and Thibert): the derivative
+/// of the area of cell `i` in the weight of a neighbour `j` is minus the length of their
+/// common boundary divided by the norm of the gradient of the difference of their squared
+/// distances, taken as twice the distance between the sites times the ratio of the metric's
+/// squared distances to squared lengths around them (see `weight_for_length()`; exact for the
+/// Euclidean embedding in the plane). A step that empties a cell or does not lower the error
+/// enough is halved.
 ///
-/// \tparam Diagram a `Surface_voronoi_diagram` whose update state was not released
+/// \tparam Diagram a `Surface_voronoi_diagram` over an embedding, whose update state was not
+///         released
 /// \tparam Metric the type of the metric the diagram was constructed with
-/// \param diagram the diagram; its weights are the starting point, and its cells must not
-///        be empty. Construct it with `Surface_voronoi::parameters::repair_cells(false)`: a
-///        repair moves pieces between cells, so that the areas jump as the weights move.
+/// \param diagram the diagram; its weights are the starting point, and its cells must not be
+///        empty. Construct it with `Surface_voronoi::parameters::candidate_selection(Candidate_selection::GLOBAL_NEAREST)`:
+///        its cells are then the restricted power diagram, whose areas move smoothly with the
+///        weights. A propagated cell is empty once its site leaves it, so that the areas jump
+///        and the iteration stalls where the targets need such a cell.
 /// \param metric the metric the diagram was constructed with
 /// \param target_areas one positive area per site, adding up to the area the sites reach
 ///        (`surface_area() - unreached_area()`)
@@ -127,25 +131,16 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver(hessian);
     Eigen::VectorXd step = solver.solve(gap);
     step.array() -= step.mean();   // the diagram does not change with a constant added
-    // Newton's step, then, where a cell's derivatives are too far off for it, each cell's
-    // own step on its own (the diagonal of the Hessian)
-    const Eigen::VectorXd own = (gap.array() / (diagonal.array() + shift)).matrix();
     bool done = false;
-    for(int kind = 0; kind < 2 && !done; ++kind)
-      for(double fraction = 1; fraction >= 1. / 64; fraction /= 2)
-      {
-        for(std::size_t i = 0; i < n; ++i)
-          diagram.set_site_weight(i, weights[i] + fraction * (kind == 0 ? step[i] : own[i]));
-        diagram.update();
-        ++result.updates;
-        const double e = measure();
-        if((done = diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error))
-        {
-          error = e;
-          break;
-        }
-      }
-    if(!done)   // no progress either way: back to the last weights
+    for(double fraction = 1; fraction >= 1. / 64 && !done; fraction /= 2)
+    {
+      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i] + fraction * step[i]);
+      diagram.update();
+      ++result.updates;
+      const double e = measure();
+      if((done = diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error)) error = e;
+    }
+    if(!done)   // no progress: back to the last weights
     {
       for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i]);
       diagram.update();
