@@ -45,7 +45,7 @@ bool fit(const char* name, const Mesh& mesh, Metric& metric, std::size_t n, bool
   std::size_t split = 0;   // cells in several pieces: across the thin wall, for the Euclidean metric
   for(std::size_t i = 0; i < n; ++i) split += vd.number_of_pieces(i) > 1;
   std::cout << name << (by_height ? ", areas growing with the height: " : ", equal areas: ")
-            << r.iterations << " Newton steps (" << r.updates << " updates), largest error "
+            << r.iterations << " Newton steps, largest error "
             << 100 * r.max_relative_error << "%, " << split << " cells in several pieces" << std::endl;
   return r.max_relative_error <= 0.01;
 }

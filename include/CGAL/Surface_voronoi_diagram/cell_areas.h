@@ -39,8 +39,6 @@ struct Area_fit_result
 {
   /// the number of Newton steps taken
   std::size_t iterations = 0;
-  /// the number of calls to the diagram's `update()`, line search included
-  std::size_t updates = 0;
   /// the largest of the cells' \f$ |a_i - t_i| / t_i \f$ at the end
   double max_relative_error = 0;
 };
@@ -85,15 +83,18 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
   Area_fit_result result;
   Eigen::VectorXd gap(n), weights(n), scale(n);
   auto measure = [&]() { // the gap to the targets, and the L2 norm of the relative gap
-    double norm = 0;
     result.max_relative_error = 0;
     for(std::size_t i = 0; i < n; ++i)
     {
       gap[i] = target_areas[i] - diagram.cell_area(i);
-      norm += CGAL::square(gap[i] / target_areas[i]);
       result.max_relative_error = (std::max)(result.max_relative_error, std::abs(gap[i]) / target_areas[i]);
     }
-    return std::sqrt(norm);
+    return (gap.array() / Eigen::Map<const Eigen::ArrayXd>(target_areas.data(), n)).matrix().norm();
+  };
+  auto set = [&](const Eigen::VectorXd& w) {
+    for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, w[i]);
+    diagram.update();
+    return measure();
   };
   for(std::size_t i = 0; i < n; ++i)
   {
@@ -101,53 +102,35 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
     scale[i] = std::sqrt(weight_for_length(metric, diagram.site_location(i), 1.));
   }
   double error = measure();
-  std::vector<Bisector_polyline<typename Diagram::Point_3> > boundaries;
-  while(result.max_relative_error > tolerance && result.iterations < max_iterations)
+  for(bool done = true; done && result.max_relative_error > tolerance && result.iterations < max_iterations;)
   {
     ++result.iterations;
-    boundaries.clear();
+    std::vector<Bisector_polyline<typename Diagram::Point_3> > boundaries;
     bisector_polylines(diagram, std::back_inserter(boundaries));
     std::vector<Eigen::Triplet<double> > entries;
-    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
     for(const auto& b : boundaries)
     {
-      const std::size_t i = b.sites[0], j = b.sites[1];
-      if(j >= n) continue;   // against area no site reaches: no weight moves it
-      double length = 0;
-      for(std::size_t k = 1; k < b.points.size(); ++k)
-        length += std::sqrt(CGAL::squared_distance(b.points[k - 1], b.points[k]));
-      const double h = length / (2 * std::sqrt(CGAL::squared_distance(diagram.site_point(i), diagram.site_point(j)))
-                                 * scale[i] * scale[j]);
-      entries.emplace_back(int(i), int(j), -h);
-      entries.emplace_back(int(j), int(i), -h);
-      diagonal[i] += h;
-      diagonal[j] += h;
+      const int i = int(b.sites[0]), j = int(b.sites[1]);
+      if(b.sites[1] >= n) continue;   // against area no site reaches: no weight moves it
+      double h = 0;
+      for(std::size_t k = 1; k < b.points.size(); ++k) h += std::sqrt(CGAL::squared_distance(b.points[k - 1], b.points[k]));
+      h /= 2 * std::sqrt(CGAL::squared_distance(diagram.site_point(i), diagram.site_point(j))) * scale[i] * scale[j];
+      entries.insert(entries.end(), { { i, i, h }, { j, j, h }, { i, j, -h }, { j, i, -h } });
     }
-    // the weights are defined up to a constant: a small shift makes the Laplacian definite
-    const double shift = 1e-9 * diagonal.maxCoeff();
-    for(std::size_t i = 0; i < n; ++i) entries.emplace_back(int(i), int(i), diagonal[i] + shift);
     Eigen::SparseMatrix<double> hessian(n, n);
     hessian.setFromTriplets(entries.begin(), entries.end());
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > solver(hessian);
-    Eigen::VectorXd step = solver.solve(gap);
+    // the weights are defined up to a constant: a small shift makes the Laplacian definite
+    hessian.diagonal().array() += 1e-9 * hessian.diagonal().maxCoeff();
+    Eigen::VectorXd step = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> >(hessian).solve(gap);
     step.array() -= step.mean();   // the diagram does not change with a constant added
-    bool done = false;
+    done = false;
     for(double fraction = 1; fraction >= 1. / 64 && !done; fraction /= 2)
     {
-      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i] + fraction * step[i]);
-      diagram.update();
-      ++result.updates;
-      const double e = measure();
-      if((done = diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error)) error = e;
+      const Eigen::VectorXd trial = weights + fraction * step;
+      const double e = set(trial);
+      if((done = diagram.statistics().empty_cells == 0 && e < (1 - fraction / 8) * error)) { error = e; weights = trial; }
     }
-    if(!done)   // no progress: back to the last weights
-    {
-      for(std::size_t i = 0; i < n; ++i) diagram.set_site_weight(i, weights[i]);
-      diagram.update();
-      measure();
-      return result;
-    }
-    for(std::size_t i = 0; i < n; ++i) weights[i] = diagram.site_weight(i);
+    if(!done) set(weights);   // no progress: back to the last weights
   }
   return result;
 }
