@@ -48,7 +48,7 @@ struct Area_fit_result
 /// so that the area of the cell of every site `i` comes within `tolerance`, relative, of
 /// `target_areas[i]`.
 ///
-/// A damped Newton iteration on the weights (Kitagawa, Merigot and Thibert): the derivative
+/// A damped Newton iteration on the weights \cgalCite{cgal:kmt-cnasot-19}: the derivative
 /// of the area of cell `i` in the weight of a neighbour `j` is minus the length of their
 /// common boundary divided by the norm of the gradient of the difference of their squared
 /// distances, taken as twice the distance between the sites times the ratio of the metric's
