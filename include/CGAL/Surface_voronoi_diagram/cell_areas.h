@@ -62,8 +62,8 @@ struct Area_fit_result
 /// \param diagram the diagram; its weights are the starting point, and its cells must not be
 ///        empty. Construct it with `Surface_voronoi::parameters::candidate_selection(Candidate_selection::GLOBAL_NEAREST)`:
 ///        its cells are then the restricted power diagram, whose areas move smoothly with the
-///        weights. A propagated cell is empty once its site leaves it, so that the areas jump
-///        and the iteration stalls where the targets need such a cell.
+///        weights. A propagated cell is, as a rule, empty once its site leaves it, so that the
+///        areas jump and the iteration stalls where the targets need such a cell.
 /// \param metric the metric the diagram was constructed with
 /// \param target_areas one positive area per site, adding up to the area the sites reach
 ///        (`surface_area() - unreached_area()`)
