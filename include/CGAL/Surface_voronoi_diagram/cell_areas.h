@@ -51,10 +51,10 @@ struct Area_fit_result
 /// A damped Newton iteration on the weights \cgalCite{cgal:kmt-cnasot-19}: the derivative
 /// of the area of cell `i` in the weight of a neighbour `j` is minus the length of their
 /// common boundary divided by the norm of the gradient of the difference of their squared
-/// distances, taken as twice the distance between the sites times the ratio of the metric's
-/// squared distances to squared lengths around them (see `weight_for_length()`; exact for the
-/// Euclidean embedding in the plane). A step that empties a cell or does not lower the error
-/// enough is halved.
+/// distances along the surface, taken as twice the squared distance between the embedded sites
+/// over their distance in space (exact where the embedding stretches all directions alike
+/// between the sites, as the Euclidean one does in a plane). A step that empties a cell or
+/// does not lower the error enough is halved.
 ///
 /// \tparam Diagram a `Surface_voronoi_diagram` over an embedding, whose update state was not
 ///         released
@@ -81,7 +81,8 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
   if(target_areas.size() != n || *std::min_element(target_areas.begin(), target_areas.end()) <= 0)
     throw Input_error("fit_power_weights_to_areas: one positive target area per site is needed");
   Area_fit_result result;
-  Eigen::VectorXd gap(n), weights(n), scale(n);
+  Eigen::VectorXd gap(n), weights(n), c(metric.dimension());
+  Eigen::MatrixXd embedded = Eigen::MatrixXd::Zero(c.size(), n);   // the sites in the embedding
   auto measure = [&]() { // the gap to the targets, and the L2 norm of the relative gap
     result.max_relative_error = 0;
     for(std::size_t i = 0; i < n; ++i)
@@ -99,7 +100,13 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
   for(std::size_t i = 0; i < n; ++i)
   {
     weights[i] = diagram.site_weight(i);
-    scale[i] = std::sqrt(weight_for_length(metric, diagram.site_location(i), 1.));
+    const auto site = diagram.site_location(i);
+    const auto corners = internal::face_corners(site.first, metric.triangle_mesh());
+    for(int k = 0; k < 3; ++k)
+    {
+      metric.coordinates(corners[k], c.data());
+      embedded.col(i) += site.second[k] * c;
+    }
   }
   double error = measure();
   for(bool done = true; done && result.max_relative_error > tolerance && result.iterations < max_iterations;)
@@ -114,7 +121,8 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
       if(b.sites[1] >= n) continue;   // against area no site reaches: no weight moves it
       double h = 0;
       for(std::size_t k = 1; k < b.points.size(); ++k) h += std::sqrt(CGAL::squared_distance(b.points[k - 1], b.points[k]));
-      h /= 2 * std::sqrt(CGAL::squared_distance(diagram.site_point(i), diagram.site_point(j))) * scale[i] * scale[j];
+      h *= std::sqrt(CGAL::squared_distance(diagram.site_point(i), diagram.site_point(j)))
+           / (2 * (embedded.col(i) - embedded.col(j)).squaredNorm());
       entries.insert(entries.end(), { { i, i, h }, { j, j, h }, { i, j, -h }, { j, i, -h } });
     }
     Eigen::SparseMatrix<double> hessian(n, n);
