@@ -58,7 +58,8 @@ struct Area_fit_result
 ///
 /// \tparam Diagram a `Surface_voronoi_diagram` over an embedding, whose update state was not
 ///         released
-/// \tparam Metric the type of the metric the diagram was constructed with
+/// \tparam Metric a model of `SurfaceVoronoiEmbedding`, the type of the metric the diagram was
+///         constructed with
 /// \param diagram the diagram; its weights are the starting point, and its cells must not be
 ///        empty. Construct it with `Surface_voronoi::parameters::candidate_selection(Candidate_selection::GLOBAL_NEAREST)`:
 ///        its cells are then the restricted power diagram, whose areas move smoothly with the
@@ -77,6 +78,7 @@ Area_fit_result fit_power_weights_to_areas(Diagram& diagram, Metric& metric,
                                            const std::vector<double>& target_areas,
                                            double tolerance = 0.01, std::size_t max_iterations = 50)
 {
+  diagram.update();   // the changes recorded before, if any
   const std::size_t n = diagram.number_of_sites();
   if(target_areas.size() != n || *std::min_element(target_areas.begin(), target_areas.end()) <= 0)
     throw Input_error("fit_power_weights_to_areas: one positive target area per site is needed");
