@@ -9,9 +9,10 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Cells of prescribed area are semi-discrete optimal transport: the areas are the gradient of
-// a concave function of the power weights, so a damped Newton iteration converges from any
-// weights that leave no cell empty (Kitagawa, Merigot and Thibert).
+// Cells of prescribed area are semi-discrete optimal transport: the areas of the restricted
+// power diagram are the gradient of a concave function of the weights, so a damped Newton
+// iteration converges from any weights that leave no cell empty (Kitagawa, Merigot and
+// Thibert). Propagated cells lose this: they empty when their site leaves them.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_CELL_AREAS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_CELL_AREAS_H
