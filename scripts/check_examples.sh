@@ -38,5 +38,6 @@ run progress_callback --
 run parallel_diagram data/lampshade_thin.off 2 --
 run epeck_kernel --
 run own_relaxation --
+run prescribed_areas --
 if [ -x "$bin/biharmonic_cholmod" ]; then run biharmonic_cholmod --; fi
 echo "all examples ran; outputs in $build/run"

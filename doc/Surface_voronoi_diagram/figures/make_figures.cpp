@@ -15,6 +15,7 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/cell_areas.h>
 #include <CGAL/Surface_voronoi_diagram/dual_triangulation.h>
 #include <CGAL/Surface_voronoi_diagram/feature_sites.h>
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
@@ -149,6 +150,36 @@ void power_figure(const std::string& dir)
   for(std::size_t i = 0; i < sites.size(); i += 4) weights[i] = 0.08;
   panels.push_back(svd_figures::render_diagram(CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> >(mesh, metric, sites, SV::parameters::site_weight_map(CGAL::make_property_map(weights))), o));
   save(dir, "svd_power.png", beside(panels));
+}
+
+// Cells of prescribed area on a torus (restricted power diagram, Euclidean embedding): the
+// weights fitted to equal areas, then to areas growing fourfold along x.
+void prescribed_areas_figure(const std::string& dir)
+{
+  Mesh mesh;
+  GEN::make_torus(mesh, 1.0, 0.4, 96, 36);
+  SV::Euclidean_embedding<Mesh> metric(mesh);
+  const std::vector<Location> sites = SV::blue_noise_sites(mesh, 60, CGAL::parameters::random_seed(3));
+  const Render_options o = panel(316, 240, {{-0.3, -1.0, -1.0}});
+  std::vector<Image> panels;
+  for(double growth : { 0., 3. })
+  {
+    CGAL::Surface_voronoi_diagram<Mesh, SV::Euclidean_embedding<Mesh> > diagram(
+        mesh, metric, sites, SV::parameters::candidate_selection(SV::Candidate_selection::GLOBAL_NEAREST));
+    std::vector<double> targets;
+    double sum = 0;
+    for(std::size_t i = 0; i < sites.size(); ++i)
+    {
+      targets.push_back(1 + growth * (diagram.site_point(i).x() + 1.4) / 2.8);   // x spans [-1.4, 1.4]
+      sum += targets.back();
+    }
+    for(double& t : targets) t *= diagram.surface_area() / sum;
+    const SV::Area_fit_result r = SV::fit_power_weights_to_areas(diagram, metric, targets);
+    std::cout << "prescribed areas, growth " << growth << ": " << r.iterations << " steps, largest error "
+              << 100 * r.max_relative_error << "%" << std::endl;
+    panels.push_back(svd_figures::render_diagram(diagram, o));
+  }
+  save(dir, "svd_prescribed_areas.png", beside(panels));
 }
 
 // Breaklines on a square: an open line and a closed loop, without and with them.
@@ -389,6 +420,7 @@ int main(int argc, char** argv)
     metrics_figure(dir, data);
     readme_figure(dir, data);
     power_figure(dir);
+    prescribed_areas_figure(dir);
     breaklines_figure(dir);
     lloyd_figure(dir);
     remeshing_figure(dir);
