@@ -98,8 +98,8 @@ public:
   }
 
   /// The face nearest to `p` by `squared_distance(f)` (the lowest index among equals), tried
-  /// ring of cells by ring until no face outside the rings can be as near. Far from the
-  /// surface the rings grow many, and every face is tried instead.
+  /// in boxes around `p` doubling in size until no face outside the box can be as near; far
+  /// from the surface the box grows to the whole grid.
   template <class Squared_distance>
   std::size_t nearest(const Point_d& p, const Squared_distance& squared_distance) const
   {
@@ -109,36 +109,20 @@ public:
       const double d2 = squared_distance(f);
       if(d2 < best_d2 || (d2 == best_d2 && f < best)) best = f, best_d2 = d2;
     };
-    for(std::uint32_t f : m_large) offer(f);
-    std::array<std::ptrdiff_t, 3> c, lo, hi;
-    for(int a = 0; a < 3; ++a) c[a] = std::ptrdiff_t(cell(p[a], a));
-    std::size_t visited = 0;
-    for(std::ptrdiff_t r = 0; m_faces > 0; ++r)
+    // a face outside the box [p - r, p + r] is at least r away; a box of many cells is a
+    // point far from the surface, which tries every face instead
+    for(double r = m_h / 4; m_faces > 0; r *= 2)
     {
-      for(int a = 0; a < 3; ++a)
-        lo[a] = (std::max)(c[a] - r, std::ptrdiff_t(0)), hi[a] = (std::min)(c[a] + r, std::ptrdiff_t(m_n[a]) - 1);
-      for(std::ptrdiff_t z = lo[2]; z <= hi[2]; ++z)
-        for(std::ptrdiff_t y = lo[1]; y <= hi[1]; ++y)
-          for(std::ptrdiff_t x = lo[0]; x <= hi[0]; ++x)
-          {
-            if((std::max)({ std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2]) }) < r) continue;   // an inner ring's
-            const std::size_t k = std::size_t(x) + m_n[0] * (std::size_t(y) + m_n[1] * std::size_t(z));
-            ++visited;
-            for(std::size_t j = m_begin[k]; j < m_begin[k + 1]; ++j) offer(m_entries[j]);
-          }
-      // every face outside the rings lies beyond one of their sides that is not the grid's
-      double beyond = std::numeric_limits<double>::infinity();
-      for(int a = 0; a < 3; ++a)
-      {
-        if(lo[a] > 0) beyond = (std::min)(beyond, p[a] - (m_low[a] + double(lo[a]) * m_h));
-        if(hi[a] + 1 < std::ptrdiff_t(m_n[a])) beyond = (std::min)(beyond, m_low[a] + double(hi[a] + 1) * m_h - p[a]);
-      }
-      if(beyond == std::numeric_limits<double>::infinity() || beyond * beyond > best_d2) break;
-      if(visited > 4096 + m_faces / 16)
+      if(std::pow(2 * r / m_h + 1, 3) > 4096. + double(m_faces) / 16)
       {
         for(std::size_t f = 0; f < m_faces; ++f) offer(f);
         break;
       }
+      const Point_d lo(p.x() - r, p.y() - r, p.z() - r), hi(p.x() + r, p.y() + r, p.z() + r);
+      for_each_near(lo, hi, offer);
+      bool whole_grid = true;
+      for(int a = 0; a < 3; ++a) whole_grid = whole_grid && lo[a] <= m_low[a] && hi[a] >= m_high[a];
+      if(whole_grid || best_d2 < r * r) break;
     }
     return best;
   }
