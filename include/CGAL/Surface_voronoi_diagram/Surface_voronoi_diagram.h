@@ -521,14 +521,23 @@ public:
     std::unique_ptr<SVi::Candidate_sites> previous;
     if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_resized && !m_data.cancelled)
       previous.reset(new SVi::Candidate_sites(m_data.candidates));
+    // the sites that moved or changed weight, for an update from the previous cells (with an
+    // embedding, whose kept values only the changed sites' change)
+    std::vector<std::uint8_t> changed;
+    if(SVi::Is_embedding<Metric>::value && !m_settings.cells_only && !m_resized && !m_data.cancelled)
+      for(std::size_t i = 0; i < m_next_sites.size(); ++i)
+      {
+        const SVi::Site &a = m_data.sites[i], &b = m_next_sites[i];
+        changed.push_back(a.face != b.face || a.barycentric != b.barycentric || a.weight != b.weight);
+      }
     m_data.sites.swap(m_next_sites);
     std::vector<SVi::Site>().swap(m_next_sites);
     m_resized = false;
     m_data.cancelled = false;
-    m_data.clear_cells();
+    if(changed.empty()) m_data.clear_cells();
     m_centroids.clear();
     m_neighbors.clear();
-    compute<true, true>(previous.get(), timer);
+    compute<true, true>(previous.get(), timer, changed.empty() ? nullptr : &changed);
   }
 
   /// releases what only the updates need (the search structure built to locate sites given
@@ -538,6 +547,8 @@ public:
   {
     m_locator.reset();
     m_metric = nullptr;
+    m_data.cuts = Surface_voronoi::internal::Face_cuts();
+    m_data.banned = Surface_voronoi::internal::Banned_fields();
     std::vector<Surface_voronoi::internal::Site>().swap(m_next_sites);
     m_resized = false;
   }
@@ -632,7 +643,8 @@ private:
   // the cells of `m_data.sites`, with the propagation started from `previous` if given
   // (embedding metrics)
   template <bool MaySelectGlobally, bool ForRelaxation>
-  void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer)
+  void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer,
+               const std::vector<std::uint8_t>* changed = nullptr)
   {
     namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
@@ -660,7 +672,7 @@ private:
       timer.stop("setup");
       SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation>
           builder(m_data, fields, m_settings, m_callback, m_times);
-      if(!builder.run()) cancel();
+      if(!(changed ? builder.update(*changed) : builder.run())) cancel();
       m_settings.previous = nullptr;   // the caller's, gone after this computation
     };
     if constexpr(SVi::Is_embedding<Metric>::value)
