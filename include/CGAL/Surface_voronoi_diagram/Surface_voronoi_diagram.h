@@ -521,14 +521,16 @@ public:
     std::unique_ptr<SVi::Candidate_sites> previous;
     if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_resized && !m_data.cancelled)
       previous.reset(new SVi::Candidate_sites(m_data.candidates));
-    // the sites that moved or changed weight, for an update from the previous cells (with an
-    // embedding, whose kept values only the changed sites' change)
+    // the sites that moved, for an update from the previous cells: with an embedding (whose
+    // kept values only the moved sites' change) and without weights (a heavier field can stop
+    // another that wins beyond it, so that the fresh propagation's order decides the cells)
     std::vector<std::uint8_t> changed;
     if(SVi::Is_embedding<Metric>::value && !m_settings.cells_only && !m_resized && !m_data.cancelled)
       for(std::size_t i = 0; i < m_next_sites.size(); ++i)
       {
         const SVi::Site &a = m_data.sites[i], &b = m_next_sites[i];
-        changed.push_back(a.face != b.face || a.barycentric != b.barycentric || a.weight != b.weight);
+        if(a.weight != 0 || b.weight != 0) { changed.clear(); break; }
+        changed.push_back(a.face != b.face || a.barycentric != b.barycentric);
       }
     m_data.sites.swap(m_next_sites);
     std::vector<SVi::Site>().swap(m_next_sites);

@@ -94,8 +94,7 @@ public:
   {
     Diagram_data<TriangleMesh>& d = m_data;
     const std::size_t nf = m_mesh.number_of_faces();
-    if(d.cuts.number_of_faces() != nf || d.statistics.broken_cells != 0 || use_global_nearest()
-       || d.recut_faces > nf / 2)   // the cuts' unused pieces would outgrow the live ones
+    if(d.cuts.number_of_faces() != nf || d.statistics.broken_cells != 0 || use_global_nearest())
     {
       d.clear_cells();
       return run();
@@ -109,6 +108,13 @@ public:
     lists = d.candidates.to_lists();
     m_cuts = std::move(d.cuts);
     m_banned = std::move(d.banned);
+    m_recut.assign(nf, 0);
+    if(d.recut_faces > nf)   // the old pieces of faces cut again as many as the live ones: all cut again
+    {
+      m_cuts.reset(nf);
+      cut_faces(lists, nullptr);
+      d.recut_faces = 0;
+    }
     // the faces that lose a changed field or hold a changed site lose their bans too
     std::vector<std::size_t> dirty;
     for(std::size_t f = 0; f < nf; ++f)
@@ -256,7 +262,14 @@ private:
     m_data.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
     // what the candidates alone decide (the vertices' owners) beside the stitching's naming
     // of the vertices, which runs on one thread: the two write to different arrays
-    stitch(m_mesh, m_data.candidates, m_cuts, m_data.partition, m_settings.parallel, [&]() { summarize_candidates(); });
+    // an update's partition: the old one, stitched again around the faces cut again
+    if(!m_recut.empty() && Stitcher<TriangleMesh>(m_mesh, m_data.candidates, m_cuts).run_on(m_data.partition, m_recut))
+    {
+      summarize_candidates();
+      std::fill(m_recut.begin(), m_recut.end(), 0);
+    }
+    else
+      stitch(m_mesh, m_data.candidates, m_cuts, m_data.partition, m_settings.parallel, [&]() { summarize_candidates(); });
     m_timer.stop("cutting");
   }
 
@@ -336,6 +349,9 @@ private:
 
   void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
   {
+    if(which)
+      for(std::size_t f : *which)
+        if(!m_recut.empty()) m_recut[f] = 1;
     if(which)
       m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
     else
@@ -422,6 +438,7 @@ private:
   Face_cuts m_cuts;
   Banned_fields m_banned;
   std::vector<std::size_t> m_touched;      // the faces the last repair round refilled
+  std::vector<std::uint8_t> m_recut;       // an update's: the faces cut again since the partition was stitched
   std::vector<std::uint8_t> m_affected;    // the sites the next check on the cuts searches
 };
 
