@@ -424,9 +424,12 @@ public:
   /// \name Updates
   /// The diagram can be computed again after its sites change, from its previous state: the
   /// indexed mesh, the breaklines, the embedding's coordinates and the named parameters given
-  /// to the constructor are kept, so that an update costs less than a construction (the
-  /// propagation, the cutting and the stitching still run over the whole mesh). The changes
-  /// are recorded by `move_site()`,
+  /// to the constructor are kept, and the cells' candidates, cuts and pieces, so that an update
+  /// costs less than a construction. With an embedding and no power weights, an update that
+  /// only moves sites propagates, cuts and stitches again only the faces the moved
+  /// sites' fields reach before or after (falling back to the whole mesh where cells left
+  /// broken or exact ties are met); other changes compute the cells over the whole mesh. The
+  /// changes are recorded by `move_site()`,
   /// `insert_site()`, `remove_site()` and `set_site_weight()`, which change nothing that the
   /// queries read, and take effect at `update()`. The updated diagram is the one the
   /// constructor would compute from the same sites in the same order, with the same named
@@ -543,7 +546,7 @@ public:
   }
 
   /// releases what only the updates need (the search structure built to locate sites given
-  /// as points, the changes recorded and not applied) and forgets the metric; the queries are
+  /// as points, the cuts of the faces, the changes recorded and not applied) and forgets the metric; the queries are
   /// unaffected, and no change or update may follow
   void release_update_state()
   {
