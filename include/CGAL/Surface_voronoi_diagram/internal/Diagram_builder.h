@@ -82,8 +82,9 @@ public:
     return repair_and_stitch(propagation, cells, 0);
   }
 
-  /// Computes the cells again after the sites `changed` marks moved or changed weight, from
-  /// the candidates, cuts and bans of the previous computation: the changed fields leave
+  /// Computes the cells again after the sites `changed` marks moved (the caller passes
+  /// unweighted moves only), from the candidates, cuts and bans of the previous computation,
+  /// the partition then stitched again around the faces cut again: the changed fields leave
   /// every face and start again from their sites, the faces that lost one are refilled from
   /// their neighbours (`Propagation::repropagate()`, which stops where a kept field
   /// dominates), those whose lists changed are cut again, and the cells they hold are checked
