@@ -52,7 +52,7 @@ void measure(const std::string& name, const std::string& metric_name, const Mesh
     const std::size_t i = std::size_t(random.get_int(0, int(sites.size())));
     if(std::find(which.begin(), which.end(), i) == which.end()) which.push_back(i);
   }
-  std::vector<double> build, first, later, build_propagation, later_propagation;
+  std::vector<double> build, first, later, build_propagation, later_propagation, later_cutting, later_repair;
   for(int r = 0; r < repeat; ++r)
   {
     SV::internal::Stage_times times;
@@ -81,10 +81,13 @@ void measure(const std::string& name, const std::string& metric_name, const Mesh
     vd.update();
     later.push_back(seconds_since(t2));
     later_propagation.push_back(times["propagation"]);
+    later_cutting.push_back(times["cutting"]);
+    later_repair.push_back(times["repair"]);
   }
   std::cout << "| " << name << " | " << metric_name << " | " << num_faces(mesh) << " | " << std::fixed << std::setprecision(3)
             << median(build) << " (" << median(build_propagation) << ") | " << median(first) << " | "
-            << median(later) << " (" << median(later_propagation) << ") | " << std::setprecision(2)
+            << median(later) << " (" << median(later_propagation) << ", " << median(later_cutting) << ", "
+            << median(later_repair) << ") | " << std::setprecision(2)
             << median(later) / median(build) << " |" << std::endl;
 }
 
@@ -103,7 +106,8 @@ int main(int argc, char** argv)
     else if(arg == "--moved" && a + 1 < argc) moved = std::size_t(std::atol(argv[++a]));
     else files.push_back(arg);
   }
-  std::cout << n << " sites, " << moved << " moved; seconds, median of " << repeat << " (propagation's share)\n\n"
+  std::cout << n << " sites, " << moved << " moved; seconds, median of " << repeat << " (the constructor's propagation; the\n"
+            << "later update's propagation, cutting and stitching, and check)\n\n"
             << "| mesh | metric | faces | constructor | first update | later update | later / constructor |\n"
             << "| --- | --- | ---: | ---: | ---: | ---: | ---: |" << std::endl;
   for(const std::string& file : files)

@@ -182,6 +182,47 @@ TEST_CASE("update: an updated diagram is the diagram computed afresh", "[update]
   }
 }
 
+// Small moves of many sites, round after round: each update starts from the previous cells
+// and propagates from the changed sites only (far fewer events than a fresh propagation), and
+// gives the fresh diagram.
+template <class Metric>
+void check_local_updates(const Mesh& m, Metric& metric, std::vector<Loc> sites)
+{
+  typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
+  Diagram vd(m, metric, sites);
+  REQUIRE(vd.statistics().broken_cells_before_repair == 0);
+  for(unsigned round = 0; round < 3; ++round)
+  {
+    for(std::size_t i = round; i < sites.size(); i += 30)
+    {
+      for(int k = 0; k < 3; ++k)   // a quarter of the way to a corner of its face
+        sites[i].second[k] = 0.75 * sites[i].second[k] + (k == int(round) ? 0.25 : 0.);
+      vd.move_site(i, sites[i]);
+    }
+    vd.update();
+    const Diagram fresh(m, metric, sites);
+    check_same_diagram(vd, fresh);
+    CHECK(vd.statistics().propagation_events * 4 < fresh.statistics().propagation_events);
+  }
+}
+
+TEST_CASE("update: small moves update the cells locally", "[update]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 120, 48);
+  const auto sites = area_uniform_locations(m, 300, 25);
+  SECTION("Euclidean")
+  {
+    Euclidean e(m);
+    check_local_updates(m, e, sites);
+  }
+  SECTION("biharmonic")
+  {
+    Biharmonic b(m);
+    check_local_updates(m, b, sites);
+  }
+}
+
 TEST_CASE("update: the update state can be released, the queries stay", "[update]")
 {
   Mesh m;

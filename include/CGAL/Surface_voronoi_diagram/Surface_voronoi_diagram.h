@@ -424,9 +424,12 @@ public:
   /// \name Updates
   /// The diagram can be computed again after its sites change, from its previous state: the
   /// indexed mesh, the breaklines, the embedding's coordinates and the named parameters given
-  /// to the constructor are kept, so that an update costs less than a construction (the
-  /// propagation, the cutting and the stitching still run over the whole mesh). The changes
-  /// are recorded by `move_site()`,
+  /// to the constructor are kept, and the cells' candidates, cuts and pieces, so that an update
+  /// costs less than a construction. With an embedding and no power weights, an update that
+  /// only moves sites propagates, cuts and stitches again only the faces the moved
+  /// sites' fields reach before or after (falling back to the whole mesh where cells left
+  /// broken or exact ties are met); other changes compute the cells over the whole mesh. The
+  /// changes are recorded by `move_site()`,
   /// `insert_site()`, `remove_site()` and `set_site_weight()`, which change nothing that the
   /// queries read, and take effect at `update()`. The updated diagram is the one the
   /// constructor would compute from the same sites in the same order, with the same named
@@ -521,23 +524,36 @@ public:
     std::unique_ptr<SVi::Candidate_sites> previous;
     if(SVi::Is_embedding<Metric>::value && m_settings.cells_only && !m_resized && !m_data.cancelled)
       previous.reset(new SVi::Candidate_sites(m_data.candidates));
+    // the sites that moved, for an update from the previous cells: with an embedding (whose
+    // kept values only the moved sites' change) and without weights (a heavier field can stop
+    // another that wins beyond it, so that the fresh propagation's order decides the cells)
+    std::vector<std::uint8_t> changed;
+    if(SVi::Is_embedding<Metric>::value && !m_settings.cells_only && !m_resized && !m_data.cancelled)
+      for(std::size_t i = 0; i < m_next_sites.size(); ++i)
+      {
+        const SVi::Site &a = m_data.sites[i], &b = m_next_sites[i];
+        if(a.weight != 0 || b.weight != 0) { changed.clear(); break; }
+        changed.push_back(a.face != b.face || a.barycentric != b.barycentric);
+      }
     m_data.sites.swap(m_next_sites);
     std::vector<SVi::Site>().swap(m_next_sites);
     m_resized = false;
     m_data.cancelled = false;
-    m_data.clear_cells();
+    if(changed.empty()) m_data.clear_cells();
     m_centroids.clear();
     m_neighbors.clear();
-    compute<true, true>(previous.get(), timer);
+    compute<true, true>(previous.get(), timer, changed.empty() ? nullptr : &changed);
   }
 
   /// releases what only the updates need (the search structure built to locate sites given
-  /// as points, the changes recorded and not applied) and forgets the metric; the queries are
+  /// as points, the cuts of the faces, the changes recorded and not applied) and forgets the metric; the queries are
   /// unaffected, and no change or update may follow
   void release_update_state()
   {
     m_locator.reset();
     m_metric = nullptr;
+    m_data.cuts = Surface_voronoi::internal::Face_cuts();
+    m_data.banned = Surface_voronoi::internal::Banned_fields();
     std::vector<Surface_voronoi::internal::Site>().swap(m_next_sites);
     m_resized = false;
   }
@@ -632,7 +648,8 @@ private:
   // the cells of `m_data.sites`, with the propagation started from `previous` if given
   // (embedding metrics)
   template <bool MaySelectGlobally, bool ForRelaxation>
-  void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer)
+  void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer,
+               const std::vector<std::uint8_t>* changed = nullptr)
   {
     namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(!m_data.sites.empty(), "there are no sites");
@@ -660,7 +677,7 @@ private:
       timer.stop("setup");
       SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation>
           builder(m_data, fields, m_settings, m_callback, m_times);
-      if(!builder.run()) cancel();
+      if(!(changed ? builder.update(*changed) : builder.run())) cancel();
       m_settings.previous = nullptr;   // the caller's, gone after this computation
     };
     if constexpr(SVi::Is_embedding<Metric>::value)

@@ -50,13 +50,20 @@ namespace internal {
 class Banned_fields
 {
 public:
-  explicit Banned_fields(std::size_t number_of_faces) : m_faces(number_of_faces) {}
+  explicit Banned_fields(std::size_t number_of_faces = 0) : m_faces(number_of_faces) {}
   bool contains(std::size_t site, std::size_t face) const
   {
     return !m_set.empty() && m_set.count(std::uint64_t(site) * m_faces + face) != 0;
   }
   void insert(std::size_t site, std::size_t face) { m_set.insert(std::uint64_t(site) * m_faces + face); }
   std::size_t size() const { return m_set.size(); }
+  /// forgets the pairs for which `drop(site, face)` is true
+  template <class Drop>
+  void erase_if(const Drop& drop)
+  {
+    for(auto it = m_set.begin(); it != m_set.end();)
+      it = drop(std::size_t(*it / m_faces), std::size_t(*it % m_faces)) ? m_set.erase(it) : std::next(it);
+  }
 
 private:
   std::uint64_t m_faces;

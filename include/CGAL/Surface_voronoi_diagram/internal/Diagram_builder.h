@@ -78,13 +78,96 @@ public:
     m_timer.stop("cutting");
     if(!progress(0.7)) return false;
 
-    // The repair rounds decide on the cuts, and the partition is stitched once, after them.
-    // From a round the cuts cannot decide (an exact tie, a broken weighted site outside its
-    // cell), or where stitching welded or dropped what the cuts keep apart, the stitched
-    // partition decides, stitched again after each round.
     Cell_connectivity cells(m_data.sites, m_data.breakline_site_faces);
+    return repair_and_stitch(propagation, cells, 0);
+  }
+
+  /// Computes the cells again after the sites `changed` marks moved (the caller passes
+  /// unweighted moves only), from the candidates, cuts and bans of the previous computation,
+  /// the partition then stitched again around the faces cut again: the changed fields leave
+  /// every face and start again from their sites, the faces that lost one are refilled from
+  /// their neighbours (`Propagation::repropagate()`, which stops where a kept field
+  /// dominates), those whose lists changed are cut again, and the cells they hold are checked
+  /// and repaired as after a repair round. The result is the fresh diagram's: the lower
+  /// envelope of each face's candidates, with the same bans. Computes afresh (`run()`) where
+  /// the previous computation left cells broken. False if the callback stopped it.
+  bool update(const std::vector<std::uint8_t>& changed)
+  {
+    Diagram_data<TriangleMesh>& d = m_data;
+    const std::size_t nf = m_mesh.number_of_faces();
+    if(d.cuts.number_of_faces() != nf || d.statistics.broken_cells != 0 || use_global_nearest())
+    {
+      d.clear_cells();
+      return run();
+    }
+    Cell_connectivity cells(d.sites, d.breakline_site_faces);
+    cells.regions_of_site = d.cell_pieces;
+    start_statistics();
+    const std::vector<std::size_t> faces = site_faces();
+    Field_propagation propagation(m_mesh, m_fields, faces, d.breakline_site_faces, m_blocked, m_settings.parallel);
+    Candidate_lists& lists = propagation.candidates;
+    lists = d.candidates.to_lists();
+    m_cuts = std::move(d.cuts);
+    m_banned = std::move(d.banned);
+    m_recut.assign(nf, 0);
+    if(d.recut_faces > nf)   // the old pieces of faces cut again as many as the live ones: all cut again
+    {
+      m_cuts.reset(nf);
+      cut_faces(lists, nullptr);
+      d.recut_faces = 0;
+    }
+    // the faces that lose a changed field or hold a changed site lose their bans too
+    std::vector<std::size_t> dirty;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const std::size_t before = lists[f].size();
+      lists[f].erase(std::remove_if(lists[f].begin(), lists[f].end(), [&](const Candidate& x) { return changed[x.site] != 0; }),
+                     lists[f].end());
+      if(lists[f].size() != before) dirty.push_back(f);
+    }
+    for(std::size_t i = 0; i < faces.size(); ++i)
+      if(changed[i]) dirty.push_back(faces[i]);
+    for(const std::pair<std::size_t, std::size_t>& x : d.breakline_site_faces)
+      if(changed[x.first]) dirty.push_back(x.second);
+    std::sort(dirty.begin(), dirty.end());
+    dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
+    m_banned.erase_if([&](std::size_t site, std::size_t f) { return changed[site] || std::binary_search(dirty.begin(), dirty.end(), f); });
+    std::vector<std::uint32_t> sites_before;
+    propagation.repropagate(dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); }, m_touched,
+                            &sites_before);
+    m_fields.propagation_done();
+    d.statistics.propagation_events = propagation.statistics.events;
+    m_timer.stop("propagation");
+    cut_faces(lists, &m_touched);
+    d.recut_faces += m_touched.size();
+    // the cells with a piece in a face cut again, before or after; the others are as they were
+    m_affected = changed;
+    for(std::uint32_t s : sites_before) m_affected[s] = 1;
+    for(std::size_t f : m_touched)
+      for(const Candidate& x : lists[f]) m_affected[x.site] = 1;
+    return repair_and_stitch(propagation, cells, 1);
+  }
+
+private:
+  // whether mesh edge e, or local edge k of face f, is a breakline
+  struct Blocked
+  {
+    const Mesh* mesh;
+    const Breaklines* breaklines;
+    bool operator()(std::size_t e) const { return !breaklines->empty() && breaklines->is_blocked(e); }
+    bool operator()(std::size_t f, int k) const { return (*this)(mesh->edges[f][k]); }
+  };
+  typedef Propagation<TriangleMesh, Fields, Blocked> Field_propagation;
+
+  // The repair rounds decide on the cuts, and the partition is stitched once, after them.
+  // From a round the cuts cannot decide (an exact tie, a broken weighted site outside its
+  // cell), or where stitching welded or dropped what the cuts keep apart, the stitched
+  // partition decides, stitched again after each round. Round 0 checks every cell, a later
+  // one those the previous round (or an update) changed.
+  bool repair_and_stitch(Field_propagation& propagation, Cell_connectivity& cells, std::size_t first_round)
+  {
     bool on_partition = !repairs();
-    for(std::size_t round = 0;; ++round)
+    for(std::size_t round = first_round;; ++round)
     {
       const bool decided = !on_partition && check_cuts(cells, propagation.candidates, round);
       if(!decided || cells.broken == 0 || round >= m_settings.max_repair_rounds)   // the partition decides, or is the result
@@ -104,20 +187,12 @@ public:
     m_timer.stop("repair");
     // the cells' areas: part of building the cells, whatever the repair did
     summarize(cells);
+    m_data.cuts = std::move(m_cuts);
+    m_data.banned = std::move(m_banned);
+    if(first_round == 0) m_data.recut_faces = 0;
     m_timer.stop("cutting");
     return progress(1.);
   }
-
-private:
-  // whether mesh edge e, or local edge k of face f, is a breakline
-  struct Blocked
-  {
-    const Mesh* mesh;
-    const Breaklines* breaklines;
-    bool operator()(std::size_t e) const { return !breaklines->empty() && breaklines->is_blocked(e); }
-    bool operator()(std::size_t f, int k) const { return (*this)(mesh->edges[f][k]); }
-  };
-  typedef Propagation<TriangleMesh, Fields, Blocked> Field_propagation;
 
   static const Embedding_values* embedding_of(const Embedding_values& fields) { return &fields; }
   template <class Lazy>
@@ -188,7 +263,14 @@ private:
     m_data.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
     // what the candidates alone decide (the vertices' owners) beside the stitching's naming
     // of the vertices, which runs on one thread: the two write to different arrays
-    stitch(m_mesh, m_data.candidates, m_cuts, m_data.partition, m_settings.parallel, [&]() { summarize_candidates(); });
+    // an update's partition: the old one, stitched again around the faces cut again
+    if(!m_recut.empty() && Stitcher<TriangleMesh>(m_mesh, m_data.candidates, m_cuts).run_on(m_data.partition, m_recut))
+    {
+      summarize_candidates();
+      std::fill(m_recut.begin(), m_recut.end(), 0);
+    }
+    else
+      stitch(m_mesh, m_data.candidates, m_cuts, m_data.partition, m_settings.parallel, [&]() { summarize_candidates(); });
     m_timer.stop("cutting");
   }
 
@@ -268,6 +350,9 @@ private:
 
   void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
   {
+    if(which)
+      for(std::size_t f : *which)
+        if(!m_recut.empty()) m_recut[f] = 1;
     if(which)
       m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
     else
@@ -354,6 +439,7 @@ private:
   Face_cuts m_cuts;
   Banned_fields m_banned;
   std::vector<std::size_t> m_touched;      // the faces the last repair round refilled
+  std::vector<std::uint8_t> m_recut;       // an update's: the faces cut again since the partition was stitched
   std::vector<std::uint8_t> m_affected;    // the sites the next check on the cuts searches
 };
 

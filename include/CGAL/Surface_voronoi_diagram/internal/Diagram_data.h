@@ -20,7 +20,9 @@
 #include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Cell_connectivity.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cut_cell_measures.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Partition.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site.h>
@@ -46,6 +48,9 @@ struct Diagram_data
   std::unique_ptr<Embedding_values> embedding;   // embedding metrics only
   Candidate_table candidates;                    // after propagation and repair
   Partition partition;                           // empty when the cells were measured on the cuts
+  Face_cuts cuts;                                // for the updates: the cuts the partition was stitched from,
+  Banned_fields banned;                          // and the repair's bans
+  std::size_t recut_faces = 0;                   // faces cut again by updates since `cuts` was reset
   Cell_measures measures;                        // Lloyd's diagrams: the cells measured on the cuts
   std::shared_ptr<const std::vector<double> > centroid_density;   // Lloyd's: by vertex, or null
   std::vector<double> cell_area;
@@ -59,6 +64,8 @@ struct Diagram_data
   {
     candidates.clear();
     partition = Partition();
+    cuts = Face_cuts();
+    banned = Banned_fields();
     measures = Cell_measures();
     cell_area.assign(sites.size(), 0.);
     cell_pieces.assign(sites.size(), 0);

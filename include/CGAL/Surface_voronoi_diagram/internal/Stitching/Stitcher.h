@@ -78,6 +78,147 @@ public:
     drop_collinear_pieces();
   }
 
+  /// Stitches again, into `out` (the partition before the cuts of the faces `recut` marks
+  /// changed), those faces and their neighbours, whose pieces meet theirs: the vertices on the
+  /// edges around this region keep their ids, and the vertices no piece uses any more go. The
+  /// pieces are those the whole stitching gives. False, with `out` unchanged, where the region
+  /// meets what only the whole stitching handles: an exact tie, coincident positions, a piece
+  /// without area, a crossing on the region's border that its face does not hold.
+  bool run_on(Partition& out, const std::vector<std::uint8_t>& recut)
+  {
+    const std::size_t nf = m_mesh.number_of_faces(), old_vertices = out.vertices.size();
+    m_out = &out;
+    std::vector<std::uint8_t> in = recut;
+    for(std::size_t f = 0; f < nf; ++f)
+      for(int k = 0; k < 3 && recut[f]; ++k)
+        if(m_mesh.neighbors[f][k] != Mesh::none) in[m_mesh.neighbors[f][k]] = 1;
+    std::map<std::array<std::uint32_t, 3>, std::uint32_t> crossings;   // (edge, sites) inside the region
+    std::vector<Partition::Piece> region;
+    bool held = true;
+    // a crossing on the border: the vertex of the (untouched) face's two pieces on that edge
+    auto border_id = [&](std::size_t f, const Vertex_key& k) {
+      const std::size_t p = out.piece_of(f, k.sites[0]), q = out.piece_of(f, k.sites[1]);
+      if(p != no_site && q != no_site)
+        for(std::uint32_t id : out.pieces[p].vertices)
+          if(out.vertices[id].kind == Partition::ON_EDGE && out.vertices[id].element == k.element
+             && std::find(out.pieces[q].vertices.begin(), out.pieces[q].vertices.end(), id) != out.pieces[q].vertices.end())
+            return std::size_t(id);
+      held = false;
+      return std::size_t(0);
+    };
+    auto id_in_region = [&](const Vertex_key& k, std::size_t f) {
+      if(k.kind == Vertex_key::MESH_VERTEX)   // a corner of f's old pieces
+      {
+        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+          for(std::uint32_t id : out.pieces[p].vertices)
+            if(out.vertices[id].kind == Partition::AT_CORNER && out.vertices[id].element == k.element) return std::size_t(id);
+        held = false;
+        return std::size_t(0);
+      }
+      if(k.kind == Vertex_key::TRIPLE_POINT) return id_of(k, f);
+      for(int l = 0; l < 3; ++l)
+        if(m_mesh.edges[f][l] == k.element && m_mesh.neighbors[f][l] != Mesh::none && !in[m_mesh.neighbors[f][l]])
+          return border_id(f, k);
+      const auto r = crossings.emplace(std::array<std::uint32_t, 3>{{ k.element, k.sites[0], k.sites[1] }}, 0);
+      if(r.second) r.first->second = std::uint32_t(new_id(k, f));
+      return std::size_t(r.first->second);
+    };
+    for(std::size_t f = 0; f < nf && held; ++f)
+    {
+      if(!in[f]) continue;
+      held = !m_cuts[f].degenerate;
+      m_face_triples.clear();
+      visit_face(f, [&](std::size_t site, std::size_t) { region.push_back(Partition::Piece{ std::uint32_t(f), site, {}, 0. }); },
+                 [&](const Vertex_key& k) { region.back().vertices.push_back(std::uint32_t(id_in_region(k, f))); });
+    }
+    // the points on each edge of the region, from its pieces and those across its border
+    std::vector<std::tuple<std::uint32_t, double, std::uint32_t> > on_edges;   // (edge, t, id)
+    auto add_points = [&](const Partition::Piece& p) {
+      for(std::uint32_t id : p.vertices)
+        if(out.vertices[id].kind == Partition::ON_EDGE) on_edges.emplace_back(out.vertices[id].element, out.vertices[id].t, id);
+    };
+    for(const Partition::Piece& p : region) add_points(p);
+    for(std::size_t f = 0; f < nf && held; ++f)
+      for(int k = 0; k < 3 && in[f]; ++k)
+      {
+        const std::size_t g = m_mesh.neighbors[f][k];
+        if(g != Mesh::none && !in[g])
+          for(std::size_t p = out.face_begin[g]; p < out.face_begin[g + 1]; ++p) add_points(out.pieces[p]);
+      }
+    std::sort(on_edges.begin(), on_edges.end());
+    on_edges.erase(std::unique(on_edges.begin(), on_edges.end()), on_edges.end());
+    // the points strictly inside each piece edge along a mesh edge, in order, as insert_edge_points()
+    auto parameter_on = [&](std::uint32_t id, std::uint32_t e, double& t) {
+      const Partition::Vertex& v = out.vertices[id];
+      t = (v.kind == Partition::AT_CORNER) ? (v.element == m_mesh.edge_vertices[e][0] ? 0. : 1.) : v.t;
+      return (v.kind == Partition::AT_CORNER && (v.element == m_mesh.edge_vertices[e][0] || v.element == m_mesh.edge_vertices[e][1]))
+             || (v.kind == Partition::ON_EDGE && v.element == e);
+    };
+    for(Partition::Piece& p : region)
+    {
+      Partition::Vertex_cycle refined;
+      for(std::size_t k = 0; k < p.vertices.size(); ++k)
+      {
+        const std::uint32_t u = p.vertices[k], w = p.vertices[(k + 1) % p.vertices.size()];
+        refined.push_back(u);
+        for(int l = 0; l < 3; ++l)
+        {
+          const std::uint32_t e = std::uint32_t(m_mesh.edges[p.face][l]);
+          double tu, tw;
+          if(!parameter_on(u, e, tu) || !parameter_on(w, e, tw)) continue;
+          const std::size_t before = refined.size();
+          for(auto it = std::lower_bound(on_edges.begin(), on_edges.end(), std::make_tuple(e, (std::min)(tu, tw), std::uint32_t(-1)));
+              it != on_edges.end() && std::get<0>(*it) == e && std::get<1>(*it) < (std::max)(tu, tw); ++it)
+            if(std::get<2>(*it) != u && std::get<2>(*it) != w) refined.push_back(std::get<2>(*it));
+          if(tu > tw) std::reverse(refined.begin() + std::ptrdiff_t(before), refined.end());
+          break;
+        }
+      }
+      p.vertices = refined;
+      p.area = piece_area(p.vertices);
+      held = held && p.area > 1e-12 * m_mesh.face_areas[p.face];
+    }
+    // no two vertices of a face at one position (welded by the whole stitching)
+    for(std::size_t a = 0, b = 0; a < region.size() && held; a = b)
+    {
+      std::vector<std::pair<Point_d, std::uint32_t> > used;
+      for(b = a; b < region.size() && region[b].face == region[a].face; ++b)
+        for(std::uint32_t id : region[b].vertices) used.emplace_back(out.vertices[id].point, id);
+      std::sort(used.begin(), used.end());
+      for(std::size_t k = 1; k < used.size(); ++k)
+        held = held && (used[k].second == used[k - 1].second || !(used[k].first == used[k - 1].first));
+    }
+    if(!held)
+    {
+      out.vertices.resize(old_vertices);
+      return false;
+    }
+    // the region's pieces in place of the old ones, and the vertices renumbered without the unused
+    std::vector<Partition::Piece> pieces;
+    pieces.reserve(out.pieces.size() + region.size());
+    for(std::size_t f = 0, r = 0; f < nf; ++f)
+      if(in[f])
+        for(; r < region.size() && region[r].face == f; ++r) pieces.push_back(std::move(region[r]));
+      else
+        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p) pieces.push_back(std::move(out.pieces[p]));
+    out.pieces.swap(pieces);
+    out.rebuild_face_begin(nf);
+    std::vector<std::uint32_t> renumbered(out.vertices.size(), no_id);
+    for(const Partition::Piece& p : out.pieces)
+      for(std::uint32_t id : p.vertices) renumbered[id] = 0;
+    std::size_t used = 0;
+    for(std::size_t id = 0; id < out.vertices.size(); ++id)
+      if(renumbered[id] == 0)
+      {
+        out.vertices[used] = out.vertices[id];
+        renumbered[id] = std::uint32_t(used++);
+      }
+    out.vertices.resize(used);
+    for(Partition::Piece& p : out.pieces)
+      for(std::uint32_t& id : p.vertices) id = renumbered[id];
+    return true;
+  }
+
 private:
   // A vertex id's key, and the face that named it, whose candidate list holds every site of
   // the key. (32-bit indices: a million-face mesh names about as many vertices)
