@@ -872,7 +872,7 @@ void build_oriented_triangle_mesh(const std::vector<Point_3>& points,
     {
       const std::size_t c = 3 * t + i;
       const H h = halfedge_of[c];
-      const typename Mesh::Vertex_index u(Size(triangles[t][i])), w(Size(triangles[t][(i + 1) % 3]));
+      const typename Mesh::Vertex_index u{ Size(triangles[t][i]) }, w{ Size(triangles[t][(i + 1) % 3]) };
       mesh.set_target(h, w);
       mesh.set_next(h, halfedge_of[3 * t + (i + 1) % 3]);
       mesh.set_face(h, f);
