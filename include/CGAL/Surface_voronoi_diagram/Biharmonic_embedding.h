@@ -78,9 +78,10 @@ namespace CGAL {
 /// \tparam LA a model of `SparseLinearAlgebraWithFactorTraits_d` for the shift-invert
 ///         factorization of \f$ L - \sigma M \f$ (symmetric positive definite); default:
 ///         `CGAL::Eigen_solver_traits` over `Eigen::SimplicialLLT` in the fill-reducing order
-///         `Eigen::MetisOrdering<int>` when the macro `CGAL_METIS_ENABLED` is defined (CGAL's
-///         METIS support, `CGAL::METIS_support`, defines it; so does the package's CMake target
-///         when it finds METIS), else `Eigen::AMDOrdering<int>`. On large meshes a supernodal
+///         `Eigen::AMDOrdering<int>`, or `Eigen::MetisOrdering<int>` from a hundred thousand
+///         vertices when the macro `CGAL_METIS_ENABLED` is defined (CGAL's METIS support,
+///         `CGAL::METIS_support`, defines it; so does the package's CMake target when it finds
+///         METIS). On large meshes a supernodal
 ///         factorization is faster: CHOLMOD's through Eigen's `CholmodSupport`, as
 ///         `CGAL::Eigen_solver_traits<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double> > >`
 ///         (see the example `biharmonic_cholmod.cpp`). Its dense blocks go through the BLAS,

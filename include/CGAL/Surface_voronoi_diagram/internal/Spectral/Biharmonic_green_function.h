@@ -96,7 +96,7 @@ public:
 
     // a fill-reducing numbering, in which the factorization works and solves
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
-    Default_fill_reducing_ordering()(L, order);   // METIS's when CGAL_METIS_ENABLED, else AMD
+    Default_fill_reducing_ordering()(L, order);
     // order.indices()[k] is the vertex eliminated k-th
     const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> position = order.inverse();
     Eigen::SparseMatrix<double> ordered;
