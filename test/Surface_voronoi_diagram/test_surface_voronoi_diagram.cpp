@@ -6,6 +6,7 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
@@ -457,14 +458,15 @@ TEST_CASE("diagram: a component without sites is unreached, not an error", "[dia
   CHECK(vd.statistics().unreached_components == 1);
 }
 
-TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one of the same points", "[diagram]")
+TEST_CASE("diagram: a prepared mesh is shared only where it is one of the same points", "[diagram]")
 {
-  typedef SV::internal::Indexed_mesh<Mesh> Indexed;
   Mesh m;
   GEN::make_icosphere(m, 3, 1.0);
   const auto vpm = get(CGAL::vertex_point, m);
   const auto sites = area_uniform_locations(m, 40, 3);
-  const std::shared_ptr<const Indexed> copy = std::make_shared<const Indexed>(m, vpm);
+  const SV::Prepared_mesh<Mesh> prepared(m);
+  const auto copy = prepared.indexed_mesh();
+  CHECK(&prepared.triangle_mesh() == &m);
   CHECK(SV::internal::shared_or_new_indexed_mesh(copy, m, vpm) == copy);
 
   // another mesh with the same points and faces is not the same mesh
@@ -482,7 +484,7 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   CHECK(fresh->points[0] == SV::internal::to_point_d(get(vpm, moved)));
   Euclidean e(m);
   const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> own(m, e, sites);
-  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::internal::hooks::shared_indexed_mesh(copy));
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::parameters::prepared_mesh(prepared));
   CHECK(given.statistics().surface_area == own.statistics().surface_area);
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(given.cell_area(i) == own.cell_area(i));
@@ -494,16 +496,16 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   const Mesh::Face_index f = *faces(flat).begin();
   const auto h = halfedge(f, flat);
   put(get(CGAL::vertex_point, flat), target(h, flat), get(get(CGAL::vertex_point, flat), source(h, flat)));
-  const std::shared_ptr<const Indexed> flat_copy = std::make_shared<const Indexed>(flat, get(CGAL::vertex_point, flat));
-  std::vector<SV::Input_problem> with_hooks = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
-      SV::internal::hooks::shared_indexed_mesh(flat_copy, SV::internal::hooks::checked_mesh_topology(true)));
+  const SV::Prepared_mesh<Mesh> flat_prepared(flat, SV::parameters::checked_mesh_topology(true));
+  std::vector<SV::Input_problem> with_prepared = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
+                                                                 SV::parameters::prepared_mesh(flat_prepared));
   std::vector<SV::Input_problem> without = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) });
   REQUIRE(!without.empty());
-  REQUIRE(with_hooks.size() == without.size());
+  REQUIRE(with_prepared.size() == without.size());
   for(std::size_t k = 0; k < without.size(); ++k)
   {
-    CHECK(with_hooks[k].kind == without[k].kind);
-    CHECK(with_hooks[k].element == without[k].element);
+    CHECK(with_prepared[k].kind == without[k].kind);
+    CHECK(with_prepared[k].element == without[k].element);
   }
   CHECK(std::any_of(without.begin(), without.end(), [](const SV::Input_problem& p) { return p.kind == SV::Input_problem::ZERO_AREA_FACE; }));
 }
