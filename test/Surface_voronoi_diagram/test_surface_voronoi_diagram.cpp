@@ -7,6 +7,7 @@
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/locate_in_face.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
@@ -456,6 +457,50 @@ TEST_CASE("diagram: a component without sites is unreached, not an error", "[dia
   CHECK(vd.number_of_unreached_faces() == num_faces(b));
   CHECK(vd.unreached_area() == Approx(CGAL::to_double(CGAL::Polygon_mesh_processing::area(b))).epsilon(1e-9));
   CHECK(vd.statistics().unreached_components == 1);
+}
+
+TEST_CASE("diagram: the arrangement's faces read from the diagram are those make_arrangement() builds", "[diagram][arrangement]")
+{
+  Mesh m;
+  GEN::make_icosphere(m, 3, 1.0);
+  Euclidean e(m);
+  SV::Stage_times times;
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, area_uniform_locations(m, 30, 5), SV::parameters::stage_times(&times));
+  for(const char* stage : { "setup", "propagation", "cutting", "repair" })
+    CHECK(times.seconds.count(stage) == 1);
+  CHECK(times["no such stage"] == 0.);
+  Mesh out;
+  auto site = out.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -2).first;
+  auto input = out.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input").first;
+  SV::make_arrangement(vd, out, SV::parameters::input_face_map(input, CGAL::parameters::face_patch_map(site)));
+  REQUIRE(out.number_of_faces() == vd.number_of_arrangement_faces());
+  REQUIRE(vd.number_of_arrangement_faces() > num_faces(m));
+  std::size_t k = 0;
+  for(Mesh::Face_index f : out.faces())
+  {
+    const std::size_t s = vd.arrangement_face_site(k);
+    CHECK(site[f] == (s == vd.no_site ? std::int64_t(-1) : std::int64_t(s)));
+    CHECK(input[f] == vd.arrangement_input_face(k));
+    std::vector<Point> ours, theirs;
+    for(std::uint32_t id : vd.arrangement_face_vertices(k)) ours.push_back(vd.arrangement_point(id));
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(out.halfedge(f), out)) theirs.push_back(out.point(v));
+    // the same cycle, from wherever the output face starts
+    REQUIRE(ours.size() == theirs.size());
+    const auto start = std::find(theirs.begin(), theirs.end(), ours.front());
+    REQUIRE(start != theirs.end());
+    std::rotate(theirs.begin(), start, theirs.end());
+    CHECK(ours == theirs);
+    ++k;
+  }
+
+  // locate_in_face() is PMP's on a face that is not a needle
+  const Mesh::Face_index f = *faces(m).begin();
+  const Point p = CGAL::centroid(m.point(target(next(halfedge(f, m), m), m)), m.point(target(halfedge(f, m), m)),
+                                 m.point(source(halfedge(f, m), m)));
+  const auto ours = SV::locate_in_face(p, f, m);
+  const auto pmp = CGAL::Polygon_mesh_processing::locate_in_face(p, f, m);
+  CHECK(ours.first == f);
+  CHECK(ours.second == pmp.second);
 }
 
 TEST_CASE("diagram: a prepared mesh is shared only where it is one of the same points", "[diagram]")
