@@ -599,9 +599,9 @@ Embedding_time time_embedding(const Mesh& mesh, std::size_t d, int runs)
   Embedding_time best;
   for(int r = 0; r < runs; ++r)
   {
-    SV::internal::Stage_times times;   // the library's internal timing hook
+    SV::Stage_times times;
     const Clock::time_point t0 = Clock::now();
-    Biharmonic e(mesh, SV::parameters::embedding_dimension(d, SV::internal::hooks::stage_times(&times)));
+    Biharmonic e(mesh, SV::parameters::embedding_dimension(d, SV::parameters::stage_times(&times)));
     const double total = seconds_since(t0);
     if(!(total >= best.total))
     {
@@ -910,9 +910,9 @@ void section_solvers(const Settings& s, const Named_mesh& m20k)
 template <class Metric>
 std::vector<double> time_diagram(const Mesh& mesh, Metric& metric, const std::vector<Location>& sites)
 {
-  SV::internal::Stage_times times;   // the library's internal timing hook
+  SV::Stage_times times;
   const Clock::time_point t0 = Clock::now();
-  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, SV::internal::hooks::stage_times(&times));
+  CGAL::Surface_voronoi_diagram<Mesh, Metric> vd(mesh, metric, sites, SV::parameters::stage_times(&times));
   const double construction = seconds_since(t0);
   const Clock::time_point t1 = Clock::now();
   const auto arrangement = svd_program::arrangement_for_PLY(vd);

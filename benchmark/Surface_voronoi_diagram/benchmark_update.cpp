@@ -55,9 +55,9 @@ void measure(const std::string& name, const std::string& metric_name, const Mesh
   std::vector<double> build, first, later, build_propagation, later_propagation, later_cutting, later_repair;
   for(int r = 0; r < repeat; ++r)
   {
-    SV::internal::Stage_times times;
+    SV::Stage_times times;
     const Clock::time_point t0 = Clock::now();
-    Diagram vd(mesh, metric, sites, SV::internal::hooks::stage_times(&times));
+    Diagram vd(mesh, metric, sites, SV::parameters::stage_times(&times));
     build.push_back(seconds_since(t0));
     build_propagation.push_back(times["propagation"]);
     // a quarter of the mean spacing, in a random direction, then onto the surface

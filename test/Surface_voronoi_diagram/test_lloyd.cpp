@@ -73,7 +73,7 @@ void check_cut_measures(const Mesh& m, Metric& metric, const std::vector<Locatio
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
   const Diagram stitched(m, metric, sites, np);
-  const Diagram on_cuts(m, metric, sites, SV::internal::hooks::cells_only(true, np));
+  const Diagram on_cuts(m, metric, sites, SV::internal::cells_only(true, np));
   REQUIRE(stitched.statistics().broken_cells == 0);
   // the cuts decided here, so the measures do come from them, not from a partition
   REQUIRE(SV::internal::Diagram_access::data(on_cuts).measures.valid);
@@ -143,10 +143,10 @@ void check_started_from_previous(const Mesh& m, Metric& metric, const std::vecto
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric> Diagram;
   // an update starts the propagation from the candidates before the sites moved
-  Diagram started(m, metric, before, SV::internal::hooks::cells_only(true, np));
+  Diagram started(m, metric, before, SV::internal::cells_only(true, np));
   for(std::size_t i = 0; i < after.size(); ++i) started.move_site(i, after[i]);
   started.update();
-  const Diagram fresh(m, metric, after, SV::internal::hooks::cells_only(true, np));
+  const Diagram fresh(m, metric, after, SV::internal::cells_only(true, np));
   REQUIRE(fresh.statistics().broken_cells == 0);
   CHECK(started.statistics().broken_cells == 0);
   CHECK(started.statistics().unreached_faces == 0);

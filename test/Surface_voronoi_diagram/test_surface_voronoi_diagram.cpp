@@ -6,6 +6,8 @@
 #include <CGAL/Surface_voronoi_diagram.h>
 #include <CGAL/Surface_voronoi_diagram/Euclidean_embedding.h>
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/locate_in_face.h>
 #include <CGAL/Surface_voronoi_diagram/validate_input.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <test_meshes.h>
@@ -457,14 +459,59 @@ TEST_CASE("diagram: a component without sites is unreached, not an error", "[dia
   CHECK(vd.statistics().unreached_components == 1);
 }
 
-TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one of the same points", "[diagram]")
+TEST_CASE("diagram: the arrangement's faces read from the diagram are those make_arrangement() builds", "[diagram][arrangement]")
 {
-  typedef SV::internal::Indexed_mesh<Mesh> Indexed;
+  Mesh m;
+  GEN::make_icosphere(m, 3, 1.0);
+  Euclidean e(m);
+  SV::Stage_times times;
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> vd(m, e, area_uniform_locations(m, 30, 5), SV::parameters::stage_times(&times));
+  for(const char* stage : { "setup", "propagation", "cutting", "repair" })
+    CHECK(times.seconds.count(stage) == 1);
+  CHECK(times["no such stage"] == 0.);
+  Mesh out;
+  auto site = out.add_property_map<Mesh::Face_index, std::int64_t>("f:site", -2).first;
+  auto input = out.add_property_map<Mesh::Face_index, Mesh::Face_index>("f:input").first;
+  SV::make_arrangement(vd, out, SV::parameters::input_face_map(input, CGAL::parameters::face_patch_map(site)));
+  REQUIRE(out.number_of_faces() == vd.number_of_arrangement_faces());
+  REQUIRE(vd.number_of_arrangement_faces() > num_faces(m));
+  std::size_t k = 0;
+  for(Mesh::Face_index f : out.faces())
+  {
+    const std::size_t s = vd.arrangement_face_site(k);
+    CHECK(site[f] == (s == vd.no_site ? std::int64_t(-1) : std::int64_t(s)));
+    CHECK(input[f] == vd.arrangement_input_face(k));
+    std::vector<Point> ours, theirs;
+    for(std::uint32_t id : vd.arrangement_face_vertices(k)) ours.push_back(vd.arrangement_point(id));
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(out.halfedge(f), out)) theirs.push_back(out.point(v));
+    // the same cycle, from wherever the output face starts
+    REQUIRE(ours.size() == theirs.size());
+    const auto start = std::find(theirs.begin(), theirs.end(), ours.front());
+    REQUIRE(start != theirs.end());
+    std::rotate(theirs.begin(), start, theirs.end());
+    CHECK(ours == theirs);
+    ++k;
+  }
+
+  // locate_in_face() is PMP's on a face that is not a needle
+  const Mesh::Face_index f = *faces(m).begin();
+  const Point p = CGAL::centroid(m.point(target(next(halfedge(f, m), m), m)), m.point(target(halfedge(f, m), m)),
+                                 m.point(source(halfedge(f, m), m)));
+  const auto ours = SV::locate_in_face(p, f, m);
+  const auto pmp = CGAL::Polygon_mesh_processing::locate_in_face(p, f, m);
+  CHECK(ours.first == f);
+  CHECK(ours.second == pmp.second);
+}
+
+TEST_CASE("diagram: a prepared mesh is shared only where it is one of the same points", "[diagram]")
+{
   Mesh m;
   GEN::make_icosphere(m, 3, 1.0);
   const auto vpm = get(CGAL::vertex_point, m);
   const auto sites = area_uniform_locations(m, 40, 3);
-  const std::shared_ptr<const Indexed> copy = std::make_shared<const Indexed>(m, vpm);
+  const SV::Prepared_mesh<Mesh> prepared(m);
+  const auto copy = prepared.indexed_mesh();
+  CHECK(&prepared.triangle_mesh() == &m);
   CHECK(SV::internal::shared_or_new_indexed_mesh(copy, m, vpm) == copy);
 
   // another mesh with the same points and faces is not the same mesh
@@ -482,7 +529,7 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   CHECK(fresh->points[0] == SV::internal::to_point_d(get(vpm, moved)));
   Euclidean e(m);
   const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> own(m, e, sites);
-  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::internal::hooks::shared_indexed_mesh(copy));
+  const CGAL::Surface_voronoi_diagram<Mesh, Euclidean> given(m, e, sites, SV::parameters::prepared_mesh(prepared));
   CHECK(given.statistics().surface_area == own.statistics().surface_area);
   for(std::size_t i = 0; i < sites.size(); ++i)
     CHECK(given.cell_area(i) == own.cell_area(i));
@@ -494,16 +541,16 @@ TEST_CASE("diagram: an indexed copy of the mesh is shared only where it is one o
   const Mesh::Face_index f = *faces(flat).begin();
   const auto h = halfedge(f, flat);
   put(get(CGAL::vertex_point, flat), target(h, flat), get(get(CGAL::vertex_point, flat), source(h, flat)));
-  const std::shared_ptr<const Indexed> flat_copy = std::make_shared<const Indexed>(flat, get(CGAL::vertex_point, flat));
-  std::vector<SV::Input_problem> with_hooks = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
-      SV::internal::hooks::shared_indexed_mesh(flat_copy, SV::internal::hooks::checked_mesh_topology(true)));
+  const SV::Prepared_mesh<Mesh> flat_prepared(flat, SV::parameters::checked_mesh_topology(true));
+  std::vector<SV::Input_problem> with_prepared = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) },
+                                                                 SV::parameters::prepared_mesh(flat_prepared));
   std::vector<SV::Input_problem> without = SV::validate_input(flat, std::vector<Point>{ Point(0, 0, 1) });
   REQUIRE(!without.empty());
-  REQUIRE(with_hooks.size() == without.size());
+  REQUIRE(with_prepared.size() == without.size());
   for(std::size_t k = 0; k < without.size(); ++k)
   {
-    CHECK(with_hooks[k].kind == without[k].kind);
-    CHECK(with_hooks[k].element == without[k].element);
+    CHECK(with_prepared[k].kind == without[k].kind);
+    CHECK(with_prepared[k].element == without[k].element);
   }
   CHECK(std::any_of(without.begin(), without.end(), [](const SV::Input_problem& p) { return p.kind == SV::Input_problem::ZERO_AREA_FACE; }));
 }

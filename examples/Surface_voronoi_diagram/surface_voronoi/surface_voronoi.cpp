@@ -35,6 +35,9 @@
 #include <CGAL/Surface_voronoi_diagram/lloyd_relaxation.h>
 #include <CGAL/Surface_voronoi_diagram/sampling.h>
 #include <CGAL/Surface_voronoi_diagram/site_insertion.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
+#include <CGAL/Surface_voronoi_diagram/locate_in_face.h>
 
 #include <CGAL/IO/OFF.h>
 
@@ -254,9 +257,10 @@ std::size_t refinement_cap(const Mesh& mesh, std::size_t sites)
 
 // the metric of --dimension full, and of auto when its columns fit
 typedef SV::Biharmonic_green_metric<Mesh, CGAL::Default, CGAL::Parallel_if_available_tag> Full_spectrum_metric;
-// The input mesh indexed once (after reading) for the validation, the metric, Lloyd and the
-// diagram; each would build its own copy otherwise.
-typedef std::shared_ptr<const SV::internal::Indexed_mesh<Mesh> > Shared_indexed_mesh;
+// A mesh prepared once (the input after reading, or its working copy) for the validation, the
+// metric, Lloyd and the diagram; each would prepare its own otherwise. The reader has checked
+// the topology on the polygon soup, and the library's refinement and insertion keep it.
+typedef SV::Prepared_mesh<Mesh, CGAL::Parallel_if_available_tag> Prepared_mesh;
 // The embedding's linear algebra: CHOLMOD's supernodal Cholesky when CMake found SuiteSparse
 // (faster on large meshes), else the library's default.
 #ifdef SVD_PROGRAM_USES_CHOLMOD
@@ -275,21 +279,23 @@ typedef CGAL::Biharmonic_embedding<Mesh, CGAL::Default, CGAL::Default, Embedding
 class Input_metric
 {
 public:
-  Input_metric(const Arguments& args, const Mesh& mesh, Shared_indexed_mesh indexed = Shared_indexed_mesh())
-    : m_args(args), m_mesh(mesh), m_indexed(std::move(indexed)) {}
+  // `prepared`: the mesh prepared, or none yet (prepared by the first build)
+  Input_metric(const Arguments& args, const Mesh& mesh, std::optional<Prepared_mesh>& prepared)
+    : m_args(args), m_mesh(mesh), m_prepared(prepared) {}
 
   // builds the metric unless it is built; its seconds are those of the first build
   void build(std::size_t dimension)
   {
     if(built()) return;
     const auto start = std::chrono::steady_clock::now();
+    const auto& prepared = this->prepared();
     if(m_args.metric == "biharmonic" && m_args.dimension_full)
-      m_full.reset(new Full_spectrum_metric(m_mesh, SV::internal::hooks::shared_indexed_mesh(m_indexed)));
+      m_full.reset(new Full_spectrum_metric(m_mesh, SV::parameters::prepared_mesh(prepared)));
     else if(m_args.metric == "biharmonic")
       m_biharmonic.reset(new Embedding_metric(m_mesh, SV::parameters::embedding_dimension(dimension,
-                                                      SV::internal::hooks::shared_indexed_mesh(m_indexed))));
+                                                      SV::parameters::prepared_mesh(prepared))));
     else if(m_args.metric == "geodesic")
-      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh, SV::internal::hooks::shared_indexed_mesh(m_indexed)));
+      m_geodesic.reset(new SV::Geodesic_metric<Mesh>(m_mesh, SV::parameters::prepared_mesh(prepared)));
     else
       m_euclidean.reset(new SV::Euclidean_embedding<Mesh>(m_mesh));
     m_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -308,13 +314,19 @@ public:
 
   bool built() const { return m_full || m_biharmonic || m_geodesic || m_euclidean; }
   double build_seconds() const { return m_seconds; }
-  // frees it, for a stage that works on another mesh
-  void release() { m_full.reset(); m_biharmonic.reset(); m_geodesic.reset(); m_euclidean.reset(); m_indexed.reset(); }
+  // the mesh prepared, prepared first if it is not
+  const Prepared_mesh& prepared()
+  {
+    if(!m_prepared) m_prepared.emplace(m_mesh, SV::parameters::checked_mesh_topology(true));
+    return *m_prepared;
+  }
+  // frees it and the prepared mesh, for a stage that works on another mesh
+  void release() { m_full.reset(); m_biharmonic.reset(); m_geodesic.reset(); m_euclidean.reset(); m_prepared.reset(); }
 
 private:
   const Arguments& m_args;
   const Mesh& m_mesh;
-  Shared_indexed_mesh m_indexed;
+  std::optional<Prepared_mesh>& m_prepared;
   std::unique_ptr<Full_spectrum_metric> m_full;
   std::unique_ptr<Embedding_metric> m_biharmonic;
   std::unique_ptr<SV::Geodesic_metric<Mesh> > m_geodesic;
@@ -381,7 +393,7 @@ Location locate_near(const Point& p, Mesh::Face_index start, const Mesh& mesh)
       const CGAL::Comparison_result c = k.compare_distance_3_object()(p, q, best_point);
       if(c == CGAL::SMALLER || (c == CGAL::EQUAL && f < best)) { best = f; best_point = q; }
     }
-  return SV::internal::locate_in_face(best_point, best, mesh, get(CGAL::vertex_point, mesh), k);
+  return SV::locate_in_face(best_point, best, mesh, CGAL::parameters::geom_traits(k));
 }
 
 Location on_site_grid(Location l, const Mesh& mesh)
@@ -480,7 +492,7 @@ std::chrono::steady_clock::time_point program_start;
 
 template <class Diagram>
 void report(const Arguments& args, const Diagram& vd, bool power, double end_to_end, double load, double embedding, double output,
-            double insertion, std::size_t faces, const SV::internal::Stage_times& times,
+            double insertion, std::size_t faces, const SV::Stage_times& times,
             const SV::Dual_validity* dual, std::size_t sites_added)
 {
   const SV::Diagram_statistics& s = vd.statistics();
@@ -538,15 +550,13 @@ void report(const Arguments& args, const Diagram& vd, bool power, double end_to_
 template <class Metric>
 void run(const Arguments& args, const Mesh& mesh, Metric& metric, const std::vector<Location>& sites,
          const Diagram_choices& choices, double load, double embedding, double insertion,
-         const std::vector<Point>& site_points, std::size_t sites_added, const Shared_indexed_mesh& indexed)
+         const std::vector<Point>& site_points, std::size_t sites_added, const Prepared_mesh& prepared)
 {
   typedef CGAL::Surface_voronoi_diagram<Mesh, Metric, CGAL::Default, CGAL::Default, CGAL::Parallel_if_available_tag> Diagram;
   const auto breakline = mesh.property_map<Mesh::Edge_index, bool>("e:breakline").first;
-  SV::internal::Stage_times times;
-  // the fans were checked on the soup (the library's refinement and insertion keep them)
+  SV::Stage_times times;
   const Diagram vd = with_diagram_parameters(choices,
-      SV::internal::hooks::shared_indexed_mesh(indexed, SV::internal::hooks::checked_mesh_topology(true,
-          SV::internal::hooks::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline)))),
+      SV::parameters::prepared_mesh(prepared, SV::parameters::stage_times(&times, CGAL::parameters::edge_is_constrained_map(breakline))),
       [&](const auto& np) { return Diagram(mesh, metric, sites, np); });
   const auto t0 = std::chrono::steady_clock::now();
   const double end_to_end = std::chrono::duration<double>(t0 - program_start).count();
@@ -773,10 +783,8 @@ int run_main(int argc, char** argv)
   // The library's preconditions, checked here so that every build gives one readable line
   // (what the reader has checked on the soup, validate_input() does not check again); part
   // of the loading, as the copy it checks on, which every stage shares
-  Shared_indexed_mesh indexed = std::make_shared<const SV::internal::Indexed_mesh<Mesh> >(
-      mesh, get(CGAL::vertex_point, mesh), SV::internal::use_threads<CGAL::Parallel_if_available_tag>());
-  for(const SV::Input_problem& p : SV::validate_input(mesh, locations,
-                                                      SV::internal::hooks::shared_indexed_mesh(indexed, SV::internal::hooks::checked_mesh_topology(true))))
+  std::optional<Prepared_mesh> prepared(std::in_place, mesh, SV::parameters::checked_mesh_topology(true));
+  for(const SV::Input_problem& p : SV::validate_input(mesh, locations, SV::parameters::prepared_mesh(*prepared)))
   {
     if(p.kind == SV::Input_problem::COINCIDENT_SITES && !lines.empty())
       fail(1, "sites file lines " + std::to_string(lines[p.element]) + " and " + std::to_string(lines[p.other])
@@ -796,7 +804,7 @@ int run_main(int argc, char** argv)
   if(args.metric == "biharmonic" && args.dimension_full && !full_fits)
     fail(1, "--dimension full: the full spectrum would take " + full_size + ", more than the 2 GiB the program allows; "
             "give a dimension or --dimension auto");
-  Input_metric input_metric(args, mesh, indexed);
+  Input_metric input_metric(args, mesh, prepared);
   if(args.metric == "biharmonic" && args.dimension_auto)
   {
     args.dimension_full = full_fits;
@@ -828,7 +836,7 @@ int run_main(int argc, char** argv)
   // with a note.
   auto dimension_for = [&](const Mesh& m) {
     if(args.metric != "biharmonic" || args.dimension_full) return asked_dimension;
-    const std::size_t largest = (&m == &mesh && indexed) ? CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(*indexed)
+    const std::size_t largest = (&m == &mesh && prepared) ? CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(*prepared)
                                                          : CGAL::Biharmonic_embedding<Mesh>::maximum_dimension(m);
     if(asked_dimension <= largest) return asked_dimension;
     const std::size_t nv = num_vertices(m), components = nv - 1 - largest;
@@ -865,7 +873,7 @@ int run_main(int argc, char** argv)
       const auto lloyd_start = Clock::now();
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
-        const auto steps = SV::internal::hooks::shared_indexed_mesh(indexed,
+        const auto steps = SV::parameters::prepared_mesh(input_metric.prepared(),
             SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd)));
         return density
           ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)
@@ -955,10 +963,7 @@ int run_main(int argc, char** argv)
       // the final diagram on a copy of the mesh (sites inserted, or refined for the geodesic
       // metric) has a metric of its own: the input mesh's is freed first
       if(args.insert_sites || (args.metric == "geodesic" && !args.no_refine))
-      {
         input_metric.release();
-        indexed.reset();
-      }
       std::vector<Location> work_sites = locations;
       SV::Site_insertion_result<Mesh, Point> inserted;
       Mesh refined;   // the refined copy, each face knowing the input face it lies in
@@ -1032,14 +1037,15 @@ int run_main(int argc, char** argv)
       if(work == &mesh)
         input_metric.apply(dimension, [&](auto& metric) {
           const double embedding = args.metric == "biharmonic" ? input_metric.build_seconds() : 0.;
-          run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added, indexed);
+          run(args, *work, metric, work_sites, choices, load, embedding, insertion, site_points, sites_added, input_metric.prepared());
         });
       else
       {
-        Input_metric metric(args, *work);
+        std::optional<Prepared_mesh> work_prepared;
+        Input_metric metric(args, *work, work_prepared);
         metric.apply(dimension, [&](auto& m) {
           const double embedding = args.metric == "biharmonic" ? metric.build_seconds() : 0.;
-          run(args, *work, m, work_sites, choices, load, embedding, insertion, site_points, sites_added, Shared_indexed_mesh());
+          run(args, *work, m, work_sites, choices, load, embedding, insertion, site_points, sites_added, metric.prepared());
         });
       }
     }

@@ -25,6 +25,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/callback.h>
@@ -158,6 +159,16 @@ public:
   ///     \cgalParamType{`std::size_t`}
   ///     \cgalParamDefault{1000}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::prepared_mesh}
+  ///     \cgalParamDescription{the mesh prepared once, shared with the other calls given it}
+  ///     \cgalParamType{`Surface_voronoi::Prepared_mesh<TriangleMesh, C>`, `C` any concurrency tag}
+  ///     \cgalParamDefault{the mesh prepared by this call}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::stage_times}
+  ///     \cgalParamDescription{receives the seconds of the stages `"assembly"` and `"solve"` (see `Surface_voronoi::Stage_times`)}
+  ///     \cgalParamType{`Surface_voronoi::Stage_times*`}
+  ///     \cgalParamDefault{`nullptr`: nothing is timed}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{callback}
   ///     \cgalParamDescription{called from time to time with the fraction of the work done (in
   ///       [0, 1]) for progress reports; returning `false` stops the computation, which returns
@@ -189,30 +200,24 @@ public:
     const std::size_t dimension = choose_parameter(get_parameter(np, SVnp::embedding_dimension), std::size_t(10));
     const double tolerance = choose_parameter(get_parameter(np, SVnp::eigen_tolerance), 1e-10);
     const std::size_t restarts = choose_parameter(get_parameter(np, SVnp::max_eigen_solver_restarts), std::size_t(1000));
-    Surface_voronoi::internal::Stage_times* times =
-        choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::internal::Stage_times*>(nullptr));
+    Surface_voronoi::Stage_times* times =
+        choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::Stage_times*>(nullptr));
     const std::function<bool(double)> callback = Surface_voronoi::internal::callback_of(np);
-    const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> > given =
-        choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh),
-                         std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >());
-    compute(tm, vpm, given, dimension, tolerance, restarts, callback, times);
+    compute(tm, vpm, Surface_voronoi::internal::prepared_mesh_of<TriangleMesh>(np).indexed_mesh(), dimension, tolerance, restarts,
+            callback, times);
   }
 
   /// the largest dimension `tm` allows: its number of vertices minus its number of connected
   /// components (one zero eigenvalue each) minus one
-  static std::size_t maximum_dimension(const TriangleMesh& tm)
-  {
-    return maximum_dimension(Surface_voronoi::internal::Indexed_mesh<TriangleMesh>(tm, get_const_property_map(CGAL::vertex_point, tm)));
-  }
+  static std::size_t maximum_dimension(const TriangleMesh& tm) { return maximum_dimension(Surface_voronoi::Prepared_mesh<TriangleMesh>(tm)); }
 
-  /// \cond SKIP_IN_MANUAL
-  // the same, from an indexed copy already made (an internal hook)
-  static std::size_t maximum_dimension(const Surface_voronoi::internal::Indexed_mesh<TriangleMesh>& mesh)
+  /// the largest dimension the mesh of `mesh` allows (see above), without preparing it again
+  template <class ConcurrencyTag_>
+  static std::size_t maximum_dimension(const Surface_voronoi::Prepared_mesh<TriangleMesh, ConcurrencyTag_>& mesh)
   {
-    const std::size_t used = mesh.number_of_components + 1;
-    return mesh.number_of_vertices() > used ? mesh.number_of_vertices() - used : 0;
+    const std::size_t used = mesh.indexed_mesh()->number_of_components + 1, n = mesh.indexed_mesh()->number_of_vertices();
+    return n > used ? n - used : 0;
   }
-  /// \endcond
 
   /// \name SurfaceVoronoiEmbedding
   /// @{
@@ -284,7 +289,7 @@ private:
                const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >& given,
                std::size_t dimension, double tolerance,
                std::size_t restarts, const std::function<bool(double)>& callback,
-               Surface_voronoi::internal::Stage_times* times)
+               Surface_voronoi::Stage_times* times)
   {
     namespace SVi = Surface_voronoi::internal;
     CGAL_precondition_msg(dimension >= 1, "the embedding dimension must be at least 1");

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_voronoi_diagram/biharmonic_dimension.h>
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
@@ -133,6 +134,11 @@ public:
   ///     \cgalParamType{`Vertex_point_map`}
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::prepared_mesh}
+  ///     \cgalParamDescription{the mesh prepared once, shared with the other calls given it}
+  ///     \cgalParamType{`Surface_voronoi::Prepared_mesh<TriangleMesh, C>`, `C` any concurrency tag}
+  ///     \cgalParamDefault{the mesh prepared by this call}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{maximum_column_memory}
   ///     \cgalParamDescription{the most memory, in bytes, that the columns of the sites of one
   ///                           `set_sites()` may take (`biharmonic_green_metric_bytes()`): more
@@ -157,8 +163,7 @@ public:
     m_maximum_bytes = CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::maximum_column_memory), 4294967296.);
     CGAL_precondition_msg(m_maximum_bytes >= 0, "maximum_column_memory must not be negative");
-    m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, Surface_voronoi::internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
+    m_mesh = internal::shared_or_new_indexed_mesh(internal::prepared_mesh_of<TriangleMesh>(np).indexed_mesh(), tm, vpm);
     internal::throw_non_finite_points(*m_mesh);   // (the copy refuses faces that are not triangles)
     auto green = std::make_shared<Green_function>();
     if(!green->build(m_mesh->points, m_mesh->triangles, m_mesh->face_component, m_mesh->number_of_components))

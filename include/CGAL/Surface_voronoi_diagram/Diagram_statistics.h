@@ -9,7 +9,7 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// What the construction of a diagram did.
+// What the construction of a diagram did, and the seconds it took by stage.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_DIAGRAM_STATISTICS_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_DIAGRAM_STATISTICS_H
@@ -17,13 +17,15 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <cstddef>
+#include <map>
+#include <string>
 
 namespace CGAL {
 namespace Surface_voronoi {
 
 /// \ingroup PkgSurfaceVoronoiDiagramRef
-/// Counts describing the construction of a `CGAL::Surface_voronoi_diagram` (no timings:
-/// those belong to the benchmarks).
+/// Counts describing the construction of a `CGAL::Surface_voronoi_diagram` (its timings are
+/// in `Stage_times`).
 struct Diagram_statistics
 {
   /// the number of sites
@@ -71,6 +73,30 @@ struct Diagram_statistics
   std::size_t welded_vertices = 0;
   /// the partition vertices inserted into pieces' edges to avoid T-junctions
   std::size_t inserted_vertices = 0;
+};
+
+/// \ingroup PkgSurfaceVoronoiDiagramRef
+/// The wall-clock seconds spent in each stage by the calls given a pointer to this object
+/// with the named parameter `Surface_voronoi::parameters::stage_times`, added up over them
+/// (clear `seconds` to start again); without that parameter nothing is timed. The stages:
+/// - of `CGAL::Surface_voronoi_diagram` (its constructor and `update()`): `"setup"` (the
+///   mesh, the sites and the metric's values read), `"propagation"` (the candidate sites of
+///   each face), `"cutting"` (the faces cut among their candidates, the cells measured) and
+///   `"repair"` (cells found in several pieces made whole);
+/// - of `CGAL::Biharmonic_embedding`: `"assembly"` (the Laplacian) and `"solve"` (the
+///   eigen-solver), which also counts its operator applications in `counts["eigen_operations"]`.
+struct Stage_times
+{
+  /// seconds by stage
+  std::map<std::string, double> seconds;
+  /// counts of work by name
+  std::map<std::string, double> counts;
+  /// the seconds of `stage`, 0 if it was not timed
+  double operator[](const std::string& stage) const
+  {
+    const auto it = seconds.find(stage);
+    return it == seconds.end() ? 0. : it->second;
+  }
 };
 
 } // namespace Surface_voronoi

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
@@ -114,6 +115,11 @@ public:
   ///     \cgalParamType{`Vertex_point_map`}
   ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::prepared_mesh}
+  ///     \cgalParamDescription{the mesh prepared once, shared with the other calls given it}
+  ///     \cgalParamType{`Surface_voronoi::Prepared_mesh<TriangleMesh, C>`, `C` any concurrency tag}
+  ///     \cgalParamDefault{the mesh prepared by this call}
+  ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
   /// \pre `tm` is a valid polygon mesh without faces of zero area, with fewer than
@@ -128,8 +134,7 @@ public:
         CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     CGAL_precondition_msg(num_vertices(tm) < std::size_t(std::uint32_t(-1)) && num_faces(tm) < std::size_t(std::uint32_t(-1)),
                           "the mesh has too many elements for the geodesic metric");
-    m_mesh = internal::shared_or_new_indexed_mesh(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const Indexed>()), tm, vpm);
+    m_mesh = internal::shared_or_new_indexed_mesh(internal::prepared_mesh_of<TriangleMesh>(np).indexed_mesh(), tm, vpm);
     internal::throw_non_finite_points(*m_mesh);   // (the copy refuses faces that are not triangles)
     m_marching_mesh = std::make_shared<const Marching_mesh>(*m_mesh);
   }

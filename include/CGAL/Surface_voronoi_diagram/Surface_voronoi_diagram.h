@@ -24,6 +24,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/metric_concepts.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Breaklines.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Cell_geometry.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Diagram_builder.h>
@@ -38,6 +39,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/Default.h>
+#include <CGAL/Iterator_range.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -211,6 +213,11 @@ public:
   ///     \cgalParamType{`Surface_voronoi::Coincident_sites`}
   ///     \cgalParamDefault{`Surface_voronoi::Coincident_sites::REJECT`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::prepared_mesh}
+  ///     \cgalParamDescription{the mesh prepared once, shared with the other calls given it}
+  ///     \cgalParamType{`Surface_voronoi::Prepared_mesh<TriangleMesh, C>`, `C` any concurrency tag}
+  ///     \cgalParamDefault{the metric's, if it has one, else the mesh prepared by this call}
+  ///   \cgalParamNEnd
   ///   \cgalParamSectionEnd
   ///   \cgalParamSectionBegin{Algorithm}
   ///   \cgalParamNBegin{Surface_voronoi::parameters::candidate_selection}
@@ -231,6 +238,11 @@ public:
   ///     \cgalParamType{`std::size_t`}
   ///     \cgalParamDefault{100}
   ///     \cgalParamExtra{less than 65535}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{Surface_voronoi::parameters::stage_times}
+  ///     \cgalParamDescription{receives the seconds of the stages `"setup"`, `"propagation"`, `"cutting"` and `"repair"`, of the construction and of every `update()`, which it must outlive (see `Surface_voronoi::Stage_times`)}
+  ///     \cgalParamType{`Surface_voronoi::Stage_times*`}
+  ///     \cgalParamDefault{`nullptr`: nothing is timed}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{callback}
   ///     \cgalParamDescription{called from time to time with the fraction of the work done (in
@@ -388,6 +400,32 @@ public:
   double surface_area() const { return m_data.mesh->total_area; }
   /// what the construction did
   const Surface_voronoi::Diagram_statistics& statistics() const { return m_data.statistics; }
+  /// @}
+
+  /// \name Arrangement
+  /// The faces of the arrangement, read without building it (`Surface_voronoi::make_arrangement()`
+  /// builds it): each a convex polygon inside one face of the mesh and one cell, its corners
+  /// numbered among the arrangement's vertices, which adjacent faces share. A cancelled
+  /// diagram has none.
+  /// @{
+
+  /// the number of vertices of the arrangement (some may be a corner of no face)
+  std::size_t number_of_arrangement_vertices() const { return m_data.partition.vertices.size(); }
+  /// the point of vertex `i` of the arrangement
+  /// \pre `i < number_of_arrangement_vertices()`
+  Point_3 arrangement_point(std::size_t i) const { return to_point(m_data.partition.vertices[i].point); }
+  /// the number of faces of the arrangement, which `make_arrangement()` adds in the order of their indices
+  std::size_t number_of_arrangement_faces() const { return m_data.partition.pieces.size(); }
+  /// the vertices of face `k` of the arrangement, counterclockwise as the faces of the mesh
+  /// \pre `k < number_of_arrangement_faces()`
+  CGAL::Iterator_range<const std::uint32_t*> arrangement_face_vertices(std::size_t k) const
+  { const auto& v = m_data.partition.pieces[k].vertices; return CGAL::make_range(v.data(), v.data() + v.size()); }
+  /// the site whose cell holds face `k` of the arrangement, `no_site` where no site reaches
+  /// \pre `k < number_of_arrangement_faces()`
+  std::size_t arrangement_face_site(std::size_t k) const { return m_data.partition.pieces[k].site; }
+  /// the face of the mesh that holds face `k` of the arrangement
+  /// \pre `k < number_of_arrangement_faces()`
+  face_descriptor arrangement_input_face(std::size_t k) const { return m_data.mesh->face_handles[m_data.partition.pieces[k].face]; }
   /// @}
 
   /// \name Cell measures
@@ -590,17 +628,16 @@ private:
 
     m_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
     m_traits = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
-    m_times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<SVi::Stage_times*>(nullptr));
+    m_times = choose_parameter(get_parameter(np, SVnp::stage_times), static_cast<Surface_voronoi::Stage_times*>(nullptr));
     m_callback = Surface_voronoi::internal::callback_of(np);
     SVi::Stage_timer timer(m_times);
 
-    const std::shared_ptr<const Indexed_mesh> given =
-        choose_parameter(get_parameter(np, SVnp::shared_indexed_mesh), std::shared_ptr<const Indexed_mesh>());
+    const auto prepared = SVi::prepared_mesh_of<TriangleMesh>(np);
+    const std::shared_ptr<const Indexed_mesh>& given = prepared.indexed_mesh();
     m_data.mesh = SVi::shared_or_new_indexed_mesh(given ? given : SVi::indexed_mesh_of<TriangleMesh>(metric), tm, m_vpm,
                                                   SVi::use_threads<ConcurrencyTag>());
-    // the copy has refused faces that are not triangles; the fans were checked by a caller
-    // that built the mesh from a checked polygon soup
-    SVi::throw_mesh_problems(*m_data.mesh, !choose_parameter(get_parameter(np, SVnp::checked_mesh_topology), false));
+    // the copy has refused faces that are not triangles
+    SVi::throw_mesh_problems(*m_data.mesh, !(prepared.topology_checked() && m_data.mesh == given));
 
     // breaklines
     if(!is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value)
@@ -726,7 +763,7 @@ private:
   Surface_voronoi::internal::Builder_settings m_settings;
   Surface_voronoi::Coincident_sites m_policy = Surface_voronoi::Coincident_sites::REJECT;
   std::function<bool(double)> m_callback;
-  Surface_voronoi::internal::Stage_times* m_times = nullptr;
+  Surface_voronoi::Stage_times* m_times = nullptr;
   std::vector<Surface_voronoi::internal::Site> m_next_sites;
   bool m_resized = false;   // whether sites were inserted or removed since the last computation
   mutable std::vector<Point_3> m_centroids;

@@ -89,7 +89,7 @@ std::size_t keep_sites_apart(const Indexed_mesh<TriangleMesh>& mesh, const Trian
 // Voronoi tessellation of the plane with weight w has about sqrt(w) sites per unit area
 // (Gersho); null without a density map.
 template <class TriangleMesh, class NamedParameters>
-std::shared_ptr<const std::vector<double> > centroid_density(const TriangleMesh& tm, const NamedParameters& np)
+std::shared_ptr<const std::vector<double> > centroid_weights(const TriangleMesh& tm, const NamedParameters& np)
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, Surface_voronoi::internal_np::vertex_density_map_t>::value)
   {
@@ -217,7 +217,7 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   // vertex owners), its centroids weighted by the density
   std::size_t it = 0;
   const std::function<bool(double)> inner = [&](double f) { return callback((double(it) + f) / double(iterations + 1)); };
-  const auto cells_np = internal::hooks::cells_only(true, internal::hooks::centroid_density(internal::centroid_density(tm, np), np));
+  const auto cells_np = internal::cells_only(true, internal::centroid_density(internal::centroid_weights(tm, np), np));
   Diagram diagram = callback ? Diagram(tm, metric, sites, cells_np.callback(inner)) : Diagram(tm, metric, sites, cells_np);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *internal::Diagram_access::data(diagram).mesh;
   internal::Nearest_point_of_cell<TriangleMesh, VPM, Geom_traits> projection(mesh, tm, vpm,

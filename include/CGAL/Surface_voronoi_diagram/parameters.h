@@ -72,7 +72,7 @@ enum stop_on_coarse_mesh_t { stop_on_coarse_mesh };
 enum input_face_map_t { input_face_map };
 enum stage_times_t { stage_times };
 enum cells_only_t { cells_only };
-enum shared_indexed_mesh_t { shared_indexed_mesh };
+enum prepared_mesh_t { prepared_mesh };
 enum checked_mesh_topology_t { checked_mesh_topology };
 enum first_moving_site_t { first_moving_site };
 enum maximum_number_of_added_sites_t { maximum_number_of_added_sites };
@@ -297,6 +297,32 @@ unspecified_type maximum_column_memory(const T& value);
 template <class T, class NamedParameters>
 unspecified_type maximum_column_memory(const T& value, const NamedParameters& chain);
 
+/// A chain of named parameters holding `value` as `prepared_mesh`: a `Prepared_mesh` of the
+/// mesh, shared by `validate_input()`, the metrics and `CGAL::Surface_voronoi_diagram` (and
+/// the diagrams of `lloyd_relaxation()`) instead of each preparing its own.
+template <class T>
+unspecified_type prepared_mesh(const T& value);
+/// The chain `chain` with `prepared_mesh(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type prepared_mesh(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `checked_mesh_topology`: whether the caller
+/// has checked what `Prepared_mesh` then skips (`bool`); read by the constructor of `Prepared_mesh`.
+template <class T>
+unspecified_type checked_mesh_topology(const T& value);
+/// The chain `chain` with `checked_mesh_topology(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type checked_mesh_topology(const T& value, const NamedParameters& chain);
+
+/// A chain of named parameters holding `value` as `stage_times`: a pointer to a `Stage_times`
+/// that `CGAL::Surface_voronoi_diagram` and `CGAL::Biharmonic_embedding` add the seconds of
+/// their stages to.
+template <class T>
+unspecified_type stage_times(const T& value);
+/// The chain `chain` with `stage_times(value)` added to it.
+template <class T, class NamedParameters>
+unspecified_type stage_times(const T& value, const NamedParameters& chain);
+
 /// @}
 #else
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(site_weight_map)
@@ -321,6 +347,9 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(sample_border)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(corner_angle)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(placed_sites)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(maximum_column_memory)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(prepared_mesh)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
+CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
 // lloyd_relaxation() keeps the sites before this index in place (the sites on feature lines,
 // placed first; add_sites_for_valid_dual() relaxes only the sites it added).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)
@@ -329,19 +358,10 @@ CGAL_SURFACE_VORONOI_NAMED_PARAMETER(first_moving_site)
 } // namespace parameters
 
 namespace internal {
-// Named parameters of the package's own callers, not API: stage times for the program and
-// the benchmarks (a Stage_times*); one indexed copy of the mesh shared by the validation,
-// the metric and the diagram (a std::shared_ptr to an Indexed_mesh of the same mesh and
-// points); the checks of the mesh's topology skipped where a reader made them on the polygon
-// soup; and the cells-only diagrams of lloyd_relaxation(), with their centroids weighted by
-// a density (a std::shared_ptr to a std::vector<double> by vertex index).
-namespace hooks {
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(stage_times)
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(shared_indexed_mesh)
-CGAL_SURFACE_VORONOI_NAMED_PARAMETER(checked_mesh_topology)
+// Named parameters of lloyd_relaxation()'s diagrams, not API: the cells only, with their
+// centroids weighted by a density (a std::shared_ptr to a std::vector<double> by vertex index).
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(cells_only)
 CGAL_SURFACE_VORONOI_NAMED_PARAMETER(centroid_density)
-} // namespace hooks
 } // namespace internal
 
 #undef CGAL_SURFACE_VORONOI_NAMED_PARAMETER

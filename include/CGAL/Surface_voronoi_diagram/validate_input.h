@@ -18,6 +18,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
+#include <CGAL/Surface_voronoi_diagram/Prepared_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Input_validation.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Site_locator.h>
@@ -66,6 +67,12 @@ namespace Surface_voronoi {
 ///     \cgalParamType{a model of `ReadablePropertyMap`}
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Surface_voronoi::parameters::prepared_mesh}
+///     \cgalParamDescription{the mesh prepared once, shared with the other calls given it; those
+///       that follow do not check it again if it is found valid}
+///     \cgalParamType{`Prepared_mesh<TriangleMesh, C>`, `C` any concurrency tag}
+///     \cgalParamDefault{the mesh prepared by this call}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{Surface_voronoi::parameters::site_weight_map}
 ///     \cgalParamDescription{the power weights, as for the diagram: their values must be finite}
 ///     \cgalParamType{a model of `ReadablePropertyMap`}
@@ -92,7 +99,9 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
   using CGAL::parameters::get_parameter;
   std::vector<Input_problem> problems;
   internal::Problem_list list(problems, 10);
-  const bool topology_checked = choose_parameter(get_parameter(np, internal_np::checked_mesh_topology), false);
+  const auto prepared = internal::prepared_mesh_of<TriangleMesh>(np);
+  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >& given = prepared.indexed_mesh();
+  const bool topology_checked = prepared.topology_checked() && given->source_mesh == &tm;
   if(!topology_checked && !CGAL::is_valid_polygon_mesh(tm))
   {
     list.add(Input_problem::INVALID_MESH, 0, "the mesh is not a valid polygon mesh (its halfedges are inconsistent)");
@@ -106,9 +115,7 @@ std::vector<Input_problem> validate_input(const TriangleMesh& tm, const SiteRang
   if(!topology_checked && !internal::find_non_triangles(tm, list)) return problems;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> > indexed = internal::shared_or_new_indexed_mesh(
-      choose_parameter(get_parameter(np, internal_np::shared_indexed_mesh), std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >()),
-      tm, vpm);
+  const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> > indexed = internal::shared_or_new_indexed_mesh(given, tm, vpm);
   const internal::Indexed_mesh<TriangleMesh>& mesh = *indexed;
   const std::size_t before = problems.size();
   internal::find_mesh_problems(mesh, list, !topology_checked);

@@ -340,8 +340,8 @@ private:
 };
 
 /// `given` if it is an indexed copy of `tm` with the points of `vpm`, else a new copy. The
-/// named parameter `internal::hooks::shared_indexed_mesh` hands one copy to every stage (the
-/// program's validation, metric, Lloyd and diagram), which would otherwise each build their own.
+/// named parameter `prepared_mesh` hands one copy to every stage (a program's validation,
+/// metric, Lloyd and diagram), which would otherwise each build their own.
 template <class TriangleMesh, class VertexPointMap>
 std::shared_ptr<const Indexed_mesh<TriangleMesh> >
 shared_or_new_indexed_mesh(const std::shared_ptr<const Indexed_mesh<TriangleMesh> >& given, const TriangleMesh& tm,

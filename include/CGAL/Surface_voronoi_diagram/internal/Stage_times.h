@@ -9,36 +9,20 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// Stage times, an internal hook and not API: the command-line program and the benchmarks
-// pass a `Stage_times` through the named parameter `internal::hooks::stage_times` and read
-// back the seconds spent per stage; without it nothing is timed.
+// The timer behind the named parameter `stage_times` (see `Stage_times`).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STAGE_TIMES_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_STAGE_TIMES_H
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Real_timer.h>
+#include <CGAL/Surface_voronoi_diagram/Diagram_statistics.h>
 
-#include <map>
-#include <string>
+#include <CGAL/Real_timer.h>
 
 namespace CGAL {
 namespace Surface_voronoi {
 namespace internal {
-
-/// seconds per stage, added up over every call that was given this object, and counts of
-/// work (such as the eigen-solver's operator applications)
-struct Stage_times
-{
-  std::map<std::string, double> seconds;
-  std::map<std::string, double> counts;
-  double operator[](const std::string& stage) const
-  {
-    const auto it = seconds.find(stage);
-    return it == seconds.end() ? 0. : it->second;
-  }
-};
 
 /// Adds the wall time since the previous `stop()` (or since construction) to a stage.
 class Stage_timer
