@@ -70,14 +70,10 @@ public:
     if(empty()) return false;
     const Partition::Vertex& a = partition.vertices[u];
     const Partition::Vertex& b = partition.vertices[w];
-    auto on_edge = [&](const Partition::Vertex& v, std::size_t e) {
-      if(v.kind == Partition::ON_EDGE) return v.element == e;
-      if(v.kind == Partition::AT_CORNER) return mesh.edge_vertices[e][0] == v.element || mesh.edge_vertices[e][1] == v.element;
-      return false;
-    };
     if(a.kind == Partition::IN_FACE || b.kind == Partition::IN_FACE) return false;
     const std::size_t e = (a.kind == Partition::ON_EDGE) ? a.element : (b.kind == Partition::ON_EDGE ? b.element : no_site);
-    if(e != no_site) return is_blocked(e) && on_edge(a, e) && on_edge(b, e);
+    double t;
+    if(e != no_site) return is_blocked(e) && partition.on_mesh_edge(mesh, u, e, t) && partition.on_mesh_edge(mesh, w, e, t);
     // two corners: the mesh edge joining them, if any
     const auto it = m_corner_edge.find((std::min)(a.element, b.element) * m_number_of_vertices + (std::max)(a.element, b.element));
     return it != m_corner_edge.end() && is_blocked(it->second);
