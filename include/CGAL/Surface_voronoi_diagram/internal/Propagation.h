@@ -55,7 +55,6 @@ struct Propagation_statistics
 {
   std::size_t events = 0;
   std::size_t admitted = 0;
-  std::size_t pruned = 0;
   std::size_t blocks = 1;   // the blocks of the first propagation (1: one global order)
   std::size_t rounds = 1;   // its rounds
 
@@ -63,7 +62,6 @@ struct Propagation_statistics
   {
     events += other.events;
     admitted += other.admitted;
-    pruned += other.pruned;
   }
 };
 
@@ -118,16 +116,13 @@ public:
   /// the first propagation, from every site
   void run()
   {
-    make_empty_lists();
+    candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     const std::size_t blocks = number_of_blocks();
     if(blocks > 1)
       run_in_blocks(blocks);
     else
     {
-      for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
-      for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-        if(x.second != m_site_faces[x.first]) offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+      for_each_start([this](std::uint32_t site, std::size_t f) { offer(m_front, site, f, Candidate::at_site); });
       auto no_ban = [](std::size_t, std::size_t) { return false; };
       drain(m_front, no_ban, nullptr);
     }
@@ -152,7 +147,7 @@ public:
   {
     const std::size_t nf = m_mesh.number_of_faces();
     CGAL_precondition(previous.number_of_faces() == nf);
-    make_empty_lists();
+    candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     for(std::size_t f = 0; f < nf; ++f)
     {
       candidates[f].reserve(previous.first[f + 1] - previous.first[f]);
@@ -264,12 +259,9 @@ public:
           if(!banned(x.site, f)) offer(m_front, x.site, f, static_cast<std::uint8_t>(k));
       }
     }
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
-        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first] && is_touched[x.second] && !banned(x.first, x.second))
-        offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+    for_each_start([&](std::uint32_t site, std::size_t f) {
+      if(is_touched[f] && !banned(site, f)) offer(m_front, site, f, Candidate::at_site);
+    });
     drain(m_front, banned, &is_touched);
     m_sites_before = nullptr;
     touched.clear();
@@ -377,11 +369,9 @@ private:
   void start_at(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue)
   {
     Candidate* x = find_site(candidates[f], site);
-    if(x && x->from_edge != unreached && x->from_edge != Candidate::at_site) return;   // reached before: cannot be
+    if(x && x->from_edge != unreached) return;   // a second start in the same face
     if(!x)
       candidates[f].push_back(Candidate(site, field_values(site, f), Candidate::at_site));
-    else if(x->from_edge == Candidate::at_site)
-      return;   // a second start in the same face
     else
       x->from_edge = Candidate::at_site;
     queue.push_back(static_cast<std::uint32_t>(f));
@@ -411,7 +401,7 @@ private:
       else
       {
         const Candidate y = carried_across(x, l, k);
-        if(is_dominated(list, y)) { ++statistics.pruned; continue; }
+        if(is_dominated(list, y)) continue;
         list.push_back(y);
       }
       if(again) again->emplace_back(site, g);
@@ -419,11 +409,14 @@ private:
     }
   }
 
-  // `candidates` becomes an empty list per face
-  void make_empty_lists()
+  // Calls `start(site, face)` for each site and its face, in site order, then for the other
+  // faces where the sites on breaklines start.
+  template <class Start>
+  void for_each_start(const Start& start) const
   {
-    candidates.clear();
-    candidates.resize(m_mesh.number_of_faces());
+    for(std::size_t i = 0; i < m_site_faces.size(); ++i) start(static_cast<std::uint32_t>(i), m_site_faces[i]);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) start(static_cast<std::uint32_t>(x.first), x.second);
   }
 
   void link_faces()
@@ -459,10 +452,7 @@ private:
     for(std::size_t b = 0; b < count; ++b) fronts[b].block = static_cast<std::uint32_t>(b);
     // the sites' starts, each in its face's block, in site order
     std::vector<std::vector<std::pair<std::uint32_t, std::size_t> > > starts(count);
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      starts[m_block_of[m_site_faces[i]]].emplace_back(static_cast<std::uint32_t>(i), m_site_faces[i]);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first]) starts[m_block_of[x.second]].emplace_back(static_cast<std::uint32_t>(x.first), x.second);
+    for_each_start([&](std::uint32_t site, std::size_t f) { starts[m_block_of[f]].emplace_back(site, f); });
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     for_each_chunk(count, 1, m_parallel, [&](std::size_t b, std::size_t, std::size_t) {
       for(const std::pair<std::uint32_t, std::size_t>& x : starts[b]) offer(fronts[b], x.first, x.second, Candidate::at_site);
@@ -562,7 +552,7 @@ private:
   {
     // lists only grow: a field dominated now stays dominated, so do not queue it
     Candidate_list& list = candidates[f];
-    if(dominated_in(list, x)) { ++front.statistics.pruned; return; }
+    if(dominated_in(list, x)) return;
     // past the inline room, the room doubles (boost's growth factor would reallocate at
     // every candidate of the usual three or four)
     if(list.size() == list.capacity()) list.reserve(2 * list.capacity());
@@ -595,7 +585,6 @@ private:
       if(dominated_in(list, *entry))
       {
         list.erase(list.begin() + (entry - list.data()));
-        ++front.statistics.pruned;
         continue;
       }
       if(touched && !(*touched)[e.face])
@@ -611,16 +600,10 @@ private:
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
     }
     if(&front == &m_front) statistics.add(front.statistics), front.statistics = Propagation_statistics();
-    release_queue(front);
-  }
-
-  // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
-  // of faces) and would be held through cutting and stitching: a repair's propagation is
-  // local and grows its own.
-  static void release_queue(Front& front)
-  {
-    CGAL_assertion(front.queue.empty());
-    std::vector<Event>().swap(front.queue);
+    // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
+    // of faces) and would be held through cutting and stitching: a repair's propagation is
+    // local and grows its own.
+    std::vector<Event>().swap(queue);
   }
 
   const Mesh& m_mesh;
