@@ -25,6 +25,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/range/iterator_range.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -37,20 +39,7 @@ class Candidate_table
 {
 public:
   /// the candidates of one face
-  class List
-  {
-  public:
-    List(const Candidate* begin, const Candidate* end) : m_begin(begin), m_end(end) {}
-    const Candidate* begin() const { return m_begin; }
-    const Candidate* end() const { return m_end; }
-    std::size_t size() const { return std::size_t(m_end - m_begin); }
-    bool empty() const { return m_begin == m_end; }
-    const Candidate& operator[](std::size_t i) const { CGAL_assertion(i < size()); return m_begin[i]; }
-
-  private:
-    const Candidate* m_begin;
-    const Candidate* m_end;
-  };
+  typedef boost::iterator_range<const Candidate*> List;
 
   Candidate_table() = default;
 
