@@ -75,7 +75,6 @@ public:
 
   /// the number of faces
   std::size_t size() const { return m_first.empty() ? 0 : m_first.size() - 1; }
-  bool empty() const { return size() == 0; }
   /// the number of candidates of all faces
   std::size_t number_of_candidates() const { return m_items.size(); }
 
@@ -112,7 +111,6 @@ private:
 /// starts from (`Propagation::run_from()`), a few bytes per candidate.
 struct Candidate_sites
 {
-  Candidate_sites() = default;
   explicit Candidate_sites(const Candidate_table& table)
     : first(table.size() + 1, 0)
   {

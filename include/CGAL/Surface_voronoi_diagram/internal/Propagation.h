@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -161,17 +162,16 @@ public:
     std::vector<std::vector<std::size_t> > extra_starts(m_site_faces.size());
     for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
       if(x.second != m_site_faces[x.first]) extra_starts[x.first].push_back(x.second);
-    std::vector<std::uint32_t> queue, order(m_site_faces.size());
-    for(std::uint32_t s = 0; s < order.size(); ++s) order[s] = s;
-    std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
-      return m_site_faces[a] < m_site_faces[b] || (m_site_faces[a] == m_site_faces[b] && a < b);
-    });
+    std::vector<std::uint32_t> order(m_site_faces.size());
+    std::iota(order.begin(), order.end(), std::uint32_t(0));
+    std::stable_sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) { return m_site_faces[a] < m_site_faces[b]; });
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > again;   // (site, face) to spread (again)
     for(std::uint32_t s : order)
     {
-      queue.clear();
-      start_at(s, m_site_faces[s], queue);
-      for(std::size_t f : extra_starts[s]) start_at(s, f, queue);
-      for(std::size_t next = 0; next < queue.size(); ++next) spread(s, queue[next], queue, nullptr);
+      again.clear();
+      start_at(s, m_site_faces[s], again);
+      for(std::size_t f : extra_starts[s]) start_at(s, f, again);
+      for(std::size_t next = 0; next < again.size(); ++next) spread(s, again[next].second, again);
     }
     // The previous candidates no field reached are dropped, and the dominated candidates as
     // after any propagation; what they stopped is offered again around the faces that lost
@@ -189,7 +189,6 @@ public:
     std::vector<std::uint32_t> changed_faces, touched;
     for(std::size_t f = 0; f < nf; ++f)
       if(changed[f]) changed_faces.push_back(static_cast<std::uint32_t>(f));
-    std::vector<std::pair<std::uint32_t, std::uint32_t> > again;   // (site, face) to spread again
     for(std::size_t round = 0; !changed_faces.empty(); ++round)
     {
       if(round == max_rounds_from_previous) { run(); return; }   // not expected: start afresh
@@ -209,7 +208,7 @@ public:
       for(std::size_t next = 0; next < again.size(); ++next)
       {
         const std::pair<std::uint32_t, std::uint32_t> x = again[next];
-        spread(x.first, x.second, queue, &again);
+        spread(x.first, x.second, again);
       }
       touched.clear();
       for(std::size_t next = offered; next < again.size(); ++next) touched.push_back(again[next].second);
@@ -358,15 +357,8 @@ private:
     return nullptr;
   }
 
-  static bool is_dominated(const Candidate_list& list, const Candidate& x)
-  {
-    for(const Candidate& b : list)
-      if(b.site != x.site && dominates(b, x)) return true;
-    return false;
-  }
-
   // run_from(): the field of `site` starts in its face `f`
-  void start_at(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue)
+  void start_at(std::uint32_t site, std::size_t f, std::vector<std::pair<std::uint32_t, std::uint32_t> >& again)
   {
     Candidate* x = find_site(candidates[f], site);
     if(x && x->from_edge != unreached) return;   // a second start in the same face
@@ -374,13 +366,12 @@ private:
       candidates[f].push_back(Candidate(site, field_values(site, f), Candidate::at_site));
     else
       x->from_edge = Candidate::at_site;
-    queue.push_back(static_cast<std::uint32_t>(f));
+    again.emplace_back(site, static_cast<std::uint32_t>(f));
   }
 
   // run_from(): the field of `site`, reached in face `f`, goes on into the neighbours where it
-  // is not yet (those it enters go to `queue`, or with their site to `again`)
-  void spread(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue,
-              std::vector<std::pair<std::uint32_t, std::uint32_t> >* again)
+  // is not yet (those it enters go to `again`, with the site)
+  void spread(std::uint32_t site, std::size_t f, std::vector<std::pair<std::uint32_t, std::uint32_t> >& again)
   {
     ++statistics.events;
     const Candidate* here = find_site(candidates[f], site);
@@ -404,8 +395,7 @@ private:
         if(is_dominated(list, y)) continue;
         list.push_back(y);
       }
-      if(again) again->emplace_back(site, g);
-      else queue.push_back(g);
+      again.emplace_back(site, g);
     }
   }
 
