@@ -49,17 +49,13 @@ public:
         if(get(ecm, edge(h, tm))) m_blocked[mesh.edges[f][k]] = 1;
     }
     for(std::size_t e = 0; e < mesh.number_of_edges(); ++e)
-      if(m_blocked[e])
-      {
-        m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
-        ++m_count;
-      }
+      if(m_blocked[e]) m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
     // no breakline: `is_blocked()` then answers without touching a per-edge array (a cache
     // miss per propagation step on a large mesh)
-    if(m_count == 0) std::vector<std::uint8_t>().swap(m_blocked);
+    if(empty()) std::vector<std::uint8_t>().swap(m_blocked);
   }
 
-  bool empty() const { return m_count == 0; }
+  bool empty() const { return m_corner_edge.empty(); }
   bool is_blocked(std::size_t edge) const { return !m_blocked.empty() && m_blocked[edge] != 0; }
 
   /// whether the partition vertices `u` and `w` both lie on one breakline edge of the mesh
@@ -147,7 +143,6 @@ private:
   std::vector<std::uint8_t> m_blocked;                      // by global edge
   std::unordered_map<std::size_t, std::size_t> m_corner_edge;   // blocked edges by their sorted vertex pair
   std::size_t m_number_of_vertices = 0;
-  std::size_t m_count = 0;
 };
 
 } // namespace internal

@@ -319,9 +319,8 @@ private:
     Partition& out = *m_out;
     m_corner_id.assign(m_mesh.number_of_vertices(), no_id);
     m_edge_crossings_begin.assign(nf + 1, 0);
-    m_face_degenerate.assign(nf, 0);
-    for(std::size_t f = 0; f < nf; ++f) m_face_degenerate[f] = m_cuts[f].degenerate;
-    m_keep_keys = std::find(m_face_degenerate.begin(), m_face_degenerate.end(), 1) != m_face_degenerate.end();
+    m_keep_keys = false;
+    for(std::size_t f = 0; f < nf && !m_keep_keys; ++f) m_keep_keys = m_cuts[f].degenerate;
     out.face_begin.assign(nf + 1, 0);
     std::size_t pieces = 0;
     for(std::size_t f = 0; f < nf; ++f) pieces += number_of_pieces(f);
@@ -437,7 +436,7 @@ private:
     std::vector<std::uint8_t> seen(m_origins.size(), 0);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      if(!m_face_degenerate[f]) continue;
+      if(!m_cuts[f].degenerate) continue;
       // the degenerate face and its neighbours: a point on a shared edge has keys in both
       const std::size_t faces_to_scan[4] = { f, m_mesh.neighbors[f][0], m_mesh.neighbors[f][1], m_mesh.neighbors[f][2] };
       for(std::size_t g : faces_to_scan)
@@ -499,7 +498,6 @@ private:
     std::vector<std::uint32_t>().swap(m_corner_id);
     std::vector<Edge_crossing_entry>().swap(m_edge_crossings);
     std::vector<std::uint32_t>().swap(m_edge_crossings_begin);
-    std::vector<std::uint8_t>().swap(m_face_degenerate);
   }
 
   // Step 4: every vertex on a mesh edge goes into the piece edges that run along that edge.
@@ -792,7 +790,6 @@ private:
   std::vector<std::uint32_t> m_corner_id;             // by mesh vertex (ids are 32-bit)
   std::vector<Edge_crossing_entry> m_edge_crossings;  // grouped by the face that named them
   std::vector<std::uint32_t> m_edge_crossings_begin;
-  std::vector<std::uint8_t> m_face_degenerate;
   std::vector<std::size_t> m_representative;          // by weld_exact_ties, if m_keep_keys
 };
 
