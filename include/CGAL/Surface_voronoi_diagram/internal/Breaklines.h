@@ -56,6 +56,7 @@ public:
   }
 
   bool empty() const { return m_corner_edge.empty(); }
+  std::size_t size() const { return m_corner_edge.size(); }
   bool is_blocked(std::size_t edge) const { return !m_blocked.empty() && m_blocked[edge] != 0; }
 
   /// whether the partition vertices `u` and `w` both lie on one breakline edge of the mesh
