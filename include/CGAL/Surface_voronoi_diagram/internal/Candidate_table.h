@@ -88,11 +88,7 @@ public:
   Candidate_lists to_lists() const
   {
     Candidate_lists lists(size(), Candidate_list());
-    for(std::size_t f = 0; f < lists.size(); ++f)
-    {
-      const List l = (*this)[f];
-      lists[f].assign(l.begin(), l.end());
-    }
+    for(std::size_t f = 0; f < lists.size(); ++f) lists[f].assign((*this)[f].begin(), (*this)[f].end());
     return lists;
   }
 

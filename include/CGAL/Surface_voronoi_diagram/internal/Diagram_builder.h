@@ -125,10 +125,9 @@ public:
                      lists[f].end());
       if(lists[f].size() != before) dirty.push_back(f);
     }
-    for(std::size_t i = 0; i < faces.size(); ++i)
-      if(changed[i]) dirty.push_back(faces[i]);
-    for(const std::pair<std::size_t, std::size_t>& x : d.breakline_site_faces)
-      if(changed[x.first]) dirty.push_back(x.second);
+    propagation.for_each_start([&](std::size_t site, std::size_t f) {
+      if(changed[site]) dirty.push_back(f);
+    });
     std::sort(dirty.begin(), dirty.end());
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
     m_banned.erase_if([&](std::size_t site, std::size_t f) { return changed[site] || std::binary_search(dirty.begin(), dirty.end(), f); });

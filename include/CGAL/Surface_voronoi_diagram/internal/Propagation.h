@@ -272,6 +272,16 @@ public:
       }
   }
 
+  /// Calls `start(site, face)` for each site and its face, in site order, then for the other
+  /// faces where the sites on breaklines start.
+  template <class Start>
+  void for_each_start(const Start& start) const
+  {
+    for(std::size_t i = 0; i < m_site_faces.size(); ++i) start(static_cast<std::uint32_t>(i), m_site_faces[i]);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) start(static_cast<std::uint32_t>(x.first), x.second);
+  }
+
 private:
   // Small, so that the heap moves little memory: the field's values wait in the face's list,
   // as a candidate marked `waiting` (computed once: a lazy metric's values can be expensive).
@@ -397,16 +407,6 @@ private:
       }
       again.emplace_back(site, g);
     }
-  }
-
-  // Calls `start(site, face)` for each site and its face, in site order, then for the other
-  // faces where the sites on breaklines start.
-  template <class Start>
-  void for_each_start(const Start& start) const
-  {
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i) start(static_cast<std::uint32_t>(i), m_site_faces[i]);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first]) start(static_cast<std::uint32_t>(x.first), x.second);
   }
 
   void link_faces()
