@@ -893,15 +893,14 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
       }
     }
     moved.clear();
-    CHECK(moved.empty());
+    CHECK(moved.size() == 0);
     CHECK(moved.number_of_candidates() == 0);
     CHECK(copied.number_of_candidates() == total);
   }
   const SVI::Candidate_table none;
   CHECK(none.size() == 0);
-  CHECK(none.empty());
   const SVI::Candidate_table none_copied(none);
-  CHECK(none_copied.empty());
+  CHECK(none_copied.size() == 0);
   CHECK(none_copied.number_of_candidates() == 0);
 }
 

@@ -49,18 +49,14 @@ public:
         if(get(ecm, edge(h, tm))) m_blocked[mesh.edges[f][k]] = 1;
     }
     for(std::size_t e = 0; e < mesh.number_of_edges(); ++e)
-      if(m_blocked[e])
-      {
-        m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
-        ++m_count;
-      }
+      if(m_blocked[e]) m_corner_edge[mesh.edge_vertices[e][0] * m_number_of_vertices + mesh.edge_vertices[e][1]] = e;
     // no breakline: `is_blocked()` then answers without touching a per-edge array (a cache
     // miss per propagation step on a large mesh)
-    if(m_count == 0) std::vector<std::uint8_t>().swap(m_blocked);
+    if(empty()) std::vector<std::uint8_t>().swap(m_blocked);
   }
 
-  bool empty() const { return m_count == 0; }
-  std::size_t size() const { return m_count; }
+  bool empty() const { return m_corner_edge.empty(); }
+  std::size_t size() const { return m_corner_edge.size(); }
   bool is_blocked(std::size_t edge) const { return !m_blocked.empty() && m_blocked[edge] != 0; }
 
   /// whether the partition vertices `u` and `w` both lie on one breakline edge of the mesh
@@ -70,14 +66,10 @@ public:
     if(empty()) return false;
     const Partition::Vertex& a = partition.vertices[u];
     const Partition::Vertex& b = partition.vertices[w];
-    auto on_edge = [&](const Partition::Vertex& v, std::size_t e) {
-      if(v.kind == Partition::ON_EDGE) return v.element == e;
-      if(v.kind == Partition::AT_CORNER) return mesh.edge_vertices[e][0] == v.element || mesh.edge_vertices[e][1] == v.element;
-      return false;
-    };
     if(a.kind == Partition::IN_FACE || b.kind == Partition::IN_FACE) return false;
     const std::size_t e = (a.kind == Partition::ON_EDGE) ? a.element : (b.kind == Partition::ON_EDGE ? b.element : no_site);
-    if(e != no_site) return is_blocked(e) && on_edge(a, e) && on_edge(b, e);
+    double t;
+    if(e != no_site) return is_blocked(e) && partition.on_mesh_edge(mesh, u, e, t) && partition.on_mesh_edge(mesh, w, e, t);
     // two corners: the mesh edge joining them, if any
     const auto it = m_corner_edge.find((std::min)(a.element, b.element) * m_number_of_vertices + (std::max)(a.element, b.element));
     return it != m_corner_edge.end() && is_blocked(it->second);
@@ -152,7 +144,6 @@ private:
   std::vector<std::uint8_t> m_blocked;                      // by global edge
   std::unordered_map<std::size_t, std::size_t> m_corner_edge;   // blocked edges by their sorted vertex pair
   std::size_t m_number_of_vertices = 0;
-  std::size_t m_count = 0;
 };
 
 } // namespace internal

@@ -71,6 +71,14 @@ inline bool dominates(const Candidate& b, const Candidate& x)
   return true;
 }
 
+/// whether a candidate of `list` of another site dominates `x`
+inline bool is_dominated(const Candidate_list& list, const Candidate& x)
+{
+  for(const Candidate& b : list)
+    if(b.site != x.site && dominates(b, x)) return true;
+  return false;
+}
+
 /// Drops the candidates dominated by another one (they cannot win any area) and sorts by
 /// site, so that cutting does not depend on the order in which candidates arrived.
 inline void clean_candidate_list(Candidate_list& list)
@@ -79,12 +87,7 @@ inline void clean_candidate_list(Candidate_list& list)
   {
     std::size_t kept = 0;
     for(std::size_t a = 0; a < list.size(); ++a)
-    {
-      bool dominated = false;
-      for(std::size_t b = 0; b < list.size() && !dominated; ++b)
-        dominated = (b != a) && dominates(list[b], list[a]);
-      if(!dominated) list[kept++] = list[a];
-    }
+      if(!is_dominated(list, list[a])) list[kept++] = list[a];
     list.resize(kept);
     std::sort(list.begin(), list.end(), [](const Candidate& a, const Candidate& b) { return a.site < b.site; });
   }

@@ -25,6 +25,8 @@
 
 #include <CGAL/assertions.h>
 
+#include <boost/range/iterator_range.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
@@ -37,20 +39,7 @@ class Candidate_table
 {
 public:
   /// the candidates of one face
-  class List
-  {
-  public:
-    List(const Candidate* begin, const Candidate* end) : m_begin(begin), m_end(end) {}
-    const Candidate* begin() const { return m_begin; }
-    const Candidate* end() const { return m_end; }
-    std::size_t size() const { return std::size_t(m_end - m_begin); }
-    bool empty() const { return m_begin == m_end; }
-    const Candidate& operator[](std::size_t i) const { CGAL_assertion(i < size()); return m_begin[i]; }
-
-  private:
-    const Candidate* m_begin;
-    const Candidate* m_end;
-  };
+  typedef boost::iterator_range<const Candidate*> List;
 
   Candidate_table() = default;
 
@@ -86,7 +75,6 @@ public:
 
   /// the number of faces
   std::size_t size() const { return m_first.empty() ? 0 : m_first.size() - 1; }
-  bool empty() const { return size() == 0; }
   /// the number of candidates of all faces
   std::size_t number_of_candidates() const { return m_items.size(); }
 
@@ -100,11 +88,7 @@ public:
   Candidate_lists to_lists() const
   {
     Candidate_lists lists(size(), Candidate_list());
-    for(std::size_t f = 0; f < lists.size(); ++f)
-    {
-      const List l = (*this)[f];
-      lists[f].assign(l.begin(), l.end());
-    }
+    for(std::size_t f = 0; f < lists.size(); ++f) lists[f].assign((*this)[f].begin(), (*this)[f].end());
     return lists;
   }
 
@@ -123,7 +107,6 @@ private:
 /// starts from (`Propagation::run_from()`), a few bytes per candidate.
 struct Candidate_sites
 {
-  Candidate_sites() = default;
   explicit Candidate_sites(const Candidate_table& table)
     : first(table.size() + 1, 0)
   {

@@ -453,11 +453,8 @@ public:
         if(m_mesh.neighbors[f][k] != Mesh::none) adjacent(std::size_t(partition.face_begin[m_mesh.neighbors[f][k]]), std::size_t(m_mesh.edges[f][k]));
       return;
     }
-    auto on_edge = [&](std::size_t id, std::size_t e) {
-      const Partition::Vertex& v = partition.vertices[id];
-      if(v.kind == Partition::AT_CORNER) return v.element == m_mesh.edge_vertices[e][0] || v.element == m_mesh.edge_vertices[e][1];
-      return v.kind == Partition::ON_EDGE && v.element == e;
-    };
+    double t;
+    auto on_edge = [&](std::size_t id, std::size_t e) { return partition.on_mesh_edge(m_mesh, id, e, t); };
     auto has_edge = [&](std::size_t q, std::size_t u, std::size_t w) {
       const Partition::Vertex_cycle& v = partition.pieces[q].vertices;
       for(std::size_t j = 0; j < v.size(); ++j)

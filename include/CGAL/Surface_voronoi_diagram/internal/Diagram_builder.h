@@ -125,10 +125,9 @@ public:
                      lists[f].end());
       if(lists[f].size() != before) dirty.push_back(f);
     }
-    for(std::size_t i = 0; i < faces.size(); ++i)
-      if(changed[i]) dirty.push_back(faces[i]);
-    for(const std::pair<std::size_t, std::size_t>& x : d.breakline_site_faces)
-      if(changed[x.first]) dirty.push_back(x.second);
+    propagation.for_each_start([&](std::size_t site, std::size_t f) {
+      if(changed[site]) dirty.push_back(f);
+    });
     std::sort(dirty.begin(), dirty.end());
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
     m_banned.erase_if([&](std::size_t site, std::size_t f) { return changed[site] || std::binary_search(dirty.begin(), dirty.end(), f); });
@@ -226,7 +225,10 @@ private:
     if(!std::is_same<Fields, Embedding_values>::value)
       propagation.set_block_sizes(Field_propagation::faces_per_block / 4, Field_propagation::sites_per_block);
     if(use_global_nearest())
-      find_global_nearest(propagation.candidates);
+    {
+      if constexpr(MaySelectGlobally && std::is_same<Fields, Embedding_values>::value)
+        global_nearest_candidates(m_mesh, m_fields, m_data.sites.size(), m_settings.has_weights, propagation.candidates);
+    }
     else if(!start_from_previous(propagation))
       propagation.run();
     m_fields.propagation_done();
@@ -338,25 +340,12 @@ private:
     return std::is_same<Fields, Embedding_values>::value;
   }
 
-  void find_global_nearest(Candidate_lists& candidates) const
-  {
-    find_global_nearest(candidates, std::integral_constant<bool, MaySelectGlobally && std::is_same<Fields, Embedding_values>::value>());
-  }
-  void find_global_nearest(Candidate_lists& candidates, std::true_type) const
-  {
-    global_nearest_candidates(m_mesh, m_fields, m_data.sites.size(), m_settings.has_weights, candidates);
-  }
-  void find_global_nearest(Candidate_lists&, std::false_type) const {}
-
   void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
   {
-    if(which)
-      for(std::size_t f : *which)
-        if(!m_recut.empty()) m_recut[f] = 1;
-    if(which)
-      m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
-    else
-      m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
+    if(!which) return m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
+    for(std::size_t f : *which)
+      if(!m_recut.empty()) m_recut[f] = 1;
+    m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
   }
 
   // The statistics of the candidate lists, and the vertices' owners: the lowest (value,
@@ -379,8 +368,7 @@ private:
     }
     s.max_candidates_per_face = most;
     s.unreached_faces = unreached_faces;
-    s.unreached_components = 0;
-    for(auto u : unreached_component) s.unreached_components += u;
+    s.unreached_components = std::size_t(std::count(unreached_component.begin(), unreached_component.end(), 1));
     s.mean_candidates_per_face = double(total_candidates) / double(m_mesh.number_of_faces());
     if(m_settings.cells_only) return;
 

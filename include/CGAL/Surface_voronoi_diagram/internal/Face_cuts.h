@@ -33,6 +33,7 @@
 #include <boost/iterator/transform_iterator.hpp>
 #include <boost/range/iterator_range.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -121,24 +122,18 @@ public:
     const std::size_t first_chunk = m_chunks.size(), chunks = number_of_chunks(count, chunk_size);
     CGAL_precondition_msg(first_chunk + chunks < std::size_t(0xffffffffu), "too many chunks of cut faces");
     m_chunks.resize(first_chunk + chunks);
-    const auto cut_chunk = [&](std::size_t begin, std::size_t end, std::size_t c, Buffer& buffer) {
-      buffer.clear();
-      for(std::size_t k = begin; k < end; ++k) cut_face(candidates, face(k), buffer);
-      store(buffer, first_chunk + c);
-    };
-    if(!parallel)
-    {
-      Buffer buffer;
-      for_each_chunk(count, chunk_size, false, [&](std::size_t begin, std::size_t end, std::size_t c) { cut_chunk(begin, end, c, buffer); });
-      return;
-    }
-    // a scratch buffer per group of chunks, reused by its chunks in turn: the groups do not
-    // depend on the threads, and which buffer a chunk uses changes nothing it stores
-    const std::size_t chunks_per_group = 8;
+    // a scratch buffer per group of chunks (one group without `parallel`), reused by its chunks
+    // in turn: the groups do not depend on the threads, and which buffer a chunk uses changes
+    // nothing it stores
+    const std::size_t chunks_per_group = parallel ? 8 : (std::max)(chunks, std::size_t(1));
     std::vector<Buffer> buffers(number_of_chunks(chunks, chunks_per_group));
-    for_each_chunk(chunks, chunks_per_group, true, [&](std::size_t first, std::size_t last, std::size_t g) {
+    for_each_chunk(chunks, chunks_per_group, parallel, [&](std::size_t first, std::size_t last, std::size_t g) {
       for(std::size_t c = first; c < last; ++c)
-        cut_chunk(c * chunk_size, (std::min)(count, (c + 1) * chunk_size), c, buffers[g]);
+      {
+        buffers[g].clear();
+        for(std::size_t k = c * chunk_size; k < (std::min)(count, (c + 1) * chunk_size); ++k) cut_face(candidates, face(k), buffers[g]);
+        store(buffers[g], first_chunk + c);
+      }
     });
   }
 

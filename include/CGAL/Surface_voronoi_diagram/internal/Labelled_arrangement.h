@@ -109,15 +109,8 @@ public:
   void cells_not_disks(std::size_t n, std::vector<std::size_t>& out) const
   {
     std::vector<long> euler(n, 0);
-    std::vector<std::uint8_t> not_disk(n, 0), has_face(n, 0);
+    std::vector<std::uint8_t> not_disk(n, 0);
     Disjoint_sets pieces(m_mesh.number_of_faces());
-    for(Face f : m_mesh.faces())
-      if(m_site[f] >= 0)
-      {
-        ++euler[std::size_t(m_site[f])];
-        has_face[std::size_t(m_site[f])] = 1;
-      }
-
     // edges: once for each cell beside them
     for(Mesh::Edge_index e : m_mesh.edges())
     {
@@ -147,18 +140,19 @@ public:
       }
     }
 
-    // the cells' pieces, through the edges with the cell on both sides
+    // faces, and the cells' pieces, through the edges with the cell on both sides
     std::vector<std::size_t> first_root(n, std::size_t(-1));
     for(Face f : m_mesh.faces())
     {
       if(m_site[f] < 0) continue;
       const std::size_t s = std::size_t(m_site[f]), root = pieces.find(std::size_t(f));
+      ++euler[s];
       if(first_root[s] == std::size_t(-1)) first_root[s] = root;
       else if(first_root[s] != root) not_disk[s] = 1;
     }
     out.clear();
     for(std::size_t s = 0; s < n; ++s)
-      if(!has_face[s] || not_disk[s] || euler[s] != 1) out.push_back(s);
+      if(first_root[s] == std::size_t(-1) || not_disk[s] || euler[s] != 1) out.push_back(s);   // no face, or not a disk
   }
 
 private:

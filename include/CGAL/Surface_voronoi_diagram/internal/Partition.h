@@ -88,6 +88,17 @@ struct Partition
     return no_site;
   }
 
+  /// Whether vertex `id` lies on edge `e` of `mesh` (an `Indexed_mesh`), a corner of the edge
+  /// included; `t` receives its parameter from the edge's lower vertex index.
+  template <class Mesh>
+  bool on_mesh_edge(const Mesh& mesh, std::size_t id, std::size_t e, double& t) const
+  {
+    const Vertex& v = vertices[id];
+    t = (v.kind == AT_CORNER) ? (v.element == mesh.edge_vertices[e][0] ? 0. : 1.) : v.t;
+    if(v.kind == AT_CORNER) return v.element == mesh.edge_vertices[e][0] || v.element == mesh.edge_vertices[e][1];
+    return v.kind == ON_EDGE && v.element == e;
+  }
+
   /// face_begin again after pieces were removed (faces left without a piece get an empty range)
   void rebuild_face_begin(std::size_t number_of_faces)
   {

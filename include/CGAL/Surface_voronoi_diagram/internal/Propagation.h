@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -55,7 +56,6 @@ struct Propagation_statistics
 {
   std::size_t events = 0;
   std::size_t admitted = 0;
-  std::size_t pruned = 0;
   std::size_t blocks = 1;   // the blocks of the first propagation (1: one global order)
   std::size_t rounds = 1;   // its rounds
 
@@ -63,7 +63,6 @@ struct Propagation_statistics
   {
     events += other.events;
     admitted += other.admitted;
-    pruned += other.pruned;
   }
 };
 
@@ -118,16 +117,13 @@ public:
   /// the first propagation, from every site
   void run()
   {
-    make_empty_lists();
+    candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     const std::size_t blocks = number_of_blocks();
     if(blocks > 1)
       run_in_blocks(blocks);
     else
     {
-      for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
-      for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-        if(x.second != m_site_faces[x.first]) offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+      for_each_start([this](std::uint32_t site, std::size_t f) { offer(m_front, site, f, Candidate::at_site); });
       auto no_ban = [](std::size_t, std::size_t) { return false; };
       drain(m_front, no_ban, nullptr);
     }
@@ -152,7 +148,7 @@ public:
   {
     const std::size_t nf = m_mesh.number_of_faces();
     CGAL_precondition(previous.number_of_faces() == nf);
-    make_empty_lists();
+    candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     for(std::size_t f = 0; f < nf; ++f)
     {
       candidates[f].reserve(previous.first[f + 1] - previous.first[f]);
@@ -166,17 +162,16 @@ public:
     std::vector<std::vector<std::size_t> > extra_starts(m_site_faces.size());
     for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
       if(x.second != m_site_faces[x.first]) extra_starts[x.first].push_back(x.second);
-    std::vector<std::uint32_t> queue, order(m_site_faces.size());
-    for(std::uint32_t s = 0; s < order.size(); ++s) order[s] = s;
-    std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) {
-      return m_site_faces[a] < m_site_faces[b] || (m_site_faces[a] == m_site_faces[b] && a < b);
-    });
+    std::vector<std::uint32_t> order(m_site_faces.size());
+    std::iota(order.begin(), order.end(), std::uint32_t(0));
+    std::stable_sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) { return m_site_faces[a] < m_site_faces[b]; });
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > again;   // (site, face) to spread (again)
     for(std::uint32_t s : order)
     {
-      queue.clear();
-      start_at(s, m_site_faces[s], queue);
-      for(std::size_t f : extra_starts[s]) start_at(s, f, queue);
-      for(std::size_t next = 0; next < queue.size(); ++next) spread(s, queue[next], queue, nullptr);
+      again.clear();
+      start_at(s, m_site_faces[s], again);
+      for(std::size_t f : extra_starts[s]) start_at(s, f, again);
+      for(std::size_t next = 0; next < again.size(); ++next) spread(s, again[next].second, again);
     }
     // The previous candidates no field reached are dropped, and the dominated candidates as
     // after any propagation; what they stopped is offered again around the faces that lost
@@ -194,7 +189,6 @@ public:
     std::vector<std::uint32_t> changed_faces, touched;
     for(std::size_t f = 0; f < nf; ++f)
       if(changed[f]) changed_faces.push_back(static_cast<std::uint32_t>(f));
-    std::vector<std::pair<std::uint32_t, std::uint32_t> > again;   // (site, face) to spread again
     for(std::size_t round = 0; !changed_faces.empty(); ++round)
     {
       if(round == max_rounds_from_previous) { run(); return; }   // not expected: start afresh
@@ -214,7 +208,7 @@ public:
       for(std::size_t next = 0; next < again.size(); ++next)
       {
         const std::pair<std::uint32_t, std::uint32_t> x = again[next];
-        spread(x.first, x.second, queue, &again);
+        spread(x.first, x.second, again);
       }
       touched.clear();
       for(std::size_t next = offered; next < again.size(); ++next) touched.push_back(again[next].second);
@@ -264,12 +258,9 @@ public:
           if(!banned(x.site, f)) offer(m_front, x.site, f, static_cast<std::uint8_t>(k));
       }
     }
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      if(is_touched[m_site_faces[i]] && !banned(i, m_site_faces[i]))
-        offer(m_front, static_cast<std::uint32_t>(i), m_site_faces[i], Candidate::at_site);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first] && is_touched[x.second] && !banned(x.first, x.second))
-        offer(m_front, static_cast<std::uint32_t>(x.first), x.second, Candidate::at_site);
+    for_each_start([&](std::uint32_t site, std::size_t f) {
+      if(is_touched[f] && !banned(site, f)) offer(m_front, site, f, Candidate::at_site);
+    });
     drain(m_front, banned, &is_touched);
     m_sites_before = nullptr;
     touched.clear();
@@ -279,6 +270,16 @@ public:
         clean_candidate_list(candidates[f]);
         touched.push_back(f);
       }
+  }
+
+  /// Calls `start(site, face)` for each site and its face, in site order, then for the other
+  /// faces where the sites on breaklines start.
+  template <class Start>
+  void for_each_start(const Start& start) const
+  {
+    for(std::size_t i = 0; i < m_site_faces.size(); ++i) start(static_cast<std::uint32_t>(i), m_site_faces[i]);
+    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
+      if(x.second != m_site_faces[x.first]) start(static_cast<std::uint32_t>(x.first), x.second);
   }
 
 private:
@@ -366,31 +367,21 @@ private:
     return nullptr;
   }
 
-  static bool is_dominated(const Candidate_list& list, const Candidate& x)
-  {
-    for(const Candidate& b : list)
-      if(b.site != x.site && dominates(b, x)) return true;
-    return false;
-  }
-
   // run_from(): the field of `site` starts in its face `f`
-  void start_at(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue)
+  void start_at(std::uint32_t site, std::size_t f, std::vector<std::pair<std::uint32_t, std::uint32_t> >& again)
   {
     Candidate* x = find_site(candidates[f], site);
-    if(x && x->from_edge != unreached && x->from_edge != Candidate::at_site) return;   // reached before: cannot be
+    if(x && x->from_edge != unreached) return;   // a second start in the same face
     if(!x)
       candidates[f].push_back(Candidate(site, field_values(site, f), Candidate::at_site));
-    else if(x->from_edge == Candidate::at_site)
-      return;   // a second start in the same face
     else
       x->from_edge = Candidate::at_site;
-    queue.push_back(static_cast<std::uint32_t>(f));
+    again.emplace_back(site, static_cast<std::uint32_t>(f));
   }
 
   // run_from(): the field of `site`, reached in face `f`, goes on into the neighbours where it
-  // is not yet (those it enters go to `queue`, or with their site to `again`)
-  void spread(std::uint32_t site, std::size_t f, std::vector<std::uint32_t>& queue,
-              std::vector<std::pair<std::uint32_t, std::uint32_t> >* again)
+  // is not yet (those it enters go to `again`, with the site)
+  void spread(std::uint32_t site, std::size_t f, std::vector<std::pair<std::uint32_t, std::uint32_t> >& again)
   {
     ++statistics.events;
     const Candidate* here = find_site(candidates[f], site);
@@ -411,19 +402,11 @@ private:
       else
       {
         const Candidate y = carried_across(x, l, k);
-        if(is_dominated(list, y)) { ++statistics.pruned; continue; }
+        if(is_dominated(list, y)) continue;
         list.push_back(y);
       }
-      if(again) again->emplace_back(site, g);
-      else queue.push_back(g);
+      again.emplace_back(site, g);
     }
-  }
-
-  // `candidates` becomes an empty list per face
-  void make_empty_lists()
-  {
-    candidates.clear();
-    candidates.resize(m_mesh.number_of_faces());
   }
 
   void link_faces()
@@ -459,10 +442,7 @@ private:
     for(std::size_t b = 0; b < count; ++b) fronts[b].block = static_cast<std::uint32_t>(b);
     // the sites' starts, each in its face's block, in site order
     std::vector<std::vector<std::pair<std::uint32_t, std::size_t> > > starts(count);
-    for(std::size_t i = 0; i < m_site_faces.size(); ++i)
-      starts[m_block_of[m_site_faces[i]]].emplace_back(static_cast<std::uint32_t>(i), m_site_faces[i]);
-    for(const std::pair<std::size_t, std::size_t>& x : m_breakline_site_faces)
-      if(x.second != m_site_faces[x.first]) starts[m_block_of[x.second]].emplace_back(static_cast<std::uint32_t>(x.first), x.second);
+    for_each_start([&](std::uint32_t site, std::size_t f) { starts[m_block_of[f]].emplace_back(site, f); });
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     for_each_chunk(count, 1, m_parallel, [&](std::size_t b, std::size_t, std::size_t) {
       for(const std::pair<std::uint32_t, std::size_t>& x : starts[b]) offer(fronts[b], x.first, x.second, Candidate::at_site);
@@ -562,7 +542,7 @@ private:
   {
     // lists only grow: a field dominated now stays dominated, so do not queue it
     Candidate_list& list = candidates[f];
-    if(dominated_in(list, x)) { ++front.statistics.pruned; return; }
+    if(dominated_in(list, x)) return;
     // past the inline room, the room doubles (boost's growth factor would reallocate at
     // every candidate of the usual three or four)
     if(list.size() == list.capacity()) list.reserve(2 * list.capacity());
@@ -595,7 +575,6 @@ private:
       if(dominated_in(list, *entry))
       {
         list.erase(list.begin() + (entry - list.data()));
-        ++front.statistics.pruned;
         continue;
       }
       if(touched && !(*touched)[e.face])
@@ -611,16 +590,10 @@ private:
         if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
     }
     if(&front == &m_front) statistics.add(front.statistics), front.statistics = Propagation_statistics();
-    release_queue(front);
-  }
-
-  // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
-  // of faces) and would be held through cutting and stitching: a repair's propagation is
-  // local and grows its own.
-  static void release_queue(Front& front)
-  {
-    CGAL_assertion(front.queue.empty());
-    std::vector<Event>().swap(front.queue);
+    // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
+    // of faces) and would be held through cutting and stitching: a repair's propagation is
+    // local and grows its own.
+    std::vector<Event>().swap(queue);
   }
 
   const Mesh& m_mesh;

@@ -198,29 +198,24 @@ public:
 
   /// the propagation has asked for every value it needed: what the metric keeps of them
   /// may go (a repair asks again, and gets the same values)
-  void propagation_done() const { forget_distances(Has_forget_distances<Metric>()); }
+  void propagation_done() const
+  {
+    if constexpr(Has_forget_distances<Metric>::value) m_metric.forget_distances();
+  }
 
   double value(std::size_t site, std::size_t vertex) const
   {
-    const double d = squared_distance(site, vertex, Has_indexed_squared_distance<Metric>());
+    double d;
+    if constexpr(Has_indexed_squared_distance<Metric>::value)
+      d = m_metric.indexed_squared_distance(site, vertex);
+    else
+      d = m_metric.squared_distance(site, m_mesh.vertex_handles[vertex]);
     if(!(d >= 0) || !std::isfinite(d))
       throw Numerical_error("the metric returned an invalid squared distance for site " + std::to_string(site));
     return d - m_weights[site];
   }
 
 private:
-  void forget_distances(std::true_type) const { m_metric.forget_distances(); }
-  void forget_distances(std::false_type) const {}
-
-  double squared_distance(std::size_t site, std::size_t vertex, std::true_type) const
-  {
-    return m_metric.indexed_squared_distance(site, vertex);
-  }
-  double squared_distance(std::size_t site, std::size_t vertex, std::false_type) const
-  {
-    return m_metric.squared_distance(site, m_mesh.vertex_handles[vertex]);
-  }
-
   const Indexed_mesh<TriangleMesh>& m_mesh;
   Metric& m_metric;
   std::vector<double> m_weights;

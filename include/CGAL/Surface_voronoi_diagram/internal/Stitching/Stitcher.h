@@ -124,13 +124,11 @@ public:
       return std::size_t(r.first->second);
     };
     for(std::size_t f = 0; f < nf && held; ++f)
-    {
-      if(!in[f]) continue;
-      held = !m_cuts[f].degenerate;
-      m_face_triples.clear();
-      visit_face(f, [&](std::size_t site, std::size_t) { region.push_back(Partition::Piece{ std::uint32_t(f), site, {}, 0. }); },
-                 [&](const Vertex_key& k) { region.back().vertices.push_back(std::uint32_t(id_in_region(k, f))); });
-    }
+      if(in[f])
+      {
+        held = !m_cuts[f].degenerate;
+        name_face(f, region, [&](const Vertex_key& k) { return id_in_region(k, f); });
+      }
     // the points on each edge of the region, from its pieces and those across its border
     std::vector<std::tuple<std::uint32_t, double, std::uint32_t> > on_edges;   // (edge, t, id)
     auto add_points = [&](const Partition::Piece& p) {
@@ -148,45 +146,25 @@ public:
     std::sort(on_edges.begin(), on_edges.end());
     on_edges.erase(std::unique(on_edges.begin(), on_edges.end()), on_edges.end());
     // the points strictly inside each piece edge along a mesh edge, in order, as insert_edge_points()
-    auto parameter_on = [&](std::uint32_t id, std::uint32_t e, double& t) {
-      const Partition::Vertex& v = out.vertices[id];
-      t = (v.kind == Partition::AT_CORNER) ? (v.element == m_mesh.edge_vertices[e][0] ? 0. : 1.) : v.t;
-      return (v.kind == Partition::AT_CORNER && (v.element == m_mesh.edge_vertices[e][0] || v.element == m_mesh.edge_vertices[e][1]))
-             || (v.kind == Partition::ON_EDGE && v.element == e);
+    auto points = [&](std::size_t e, double lo, double hi, const auto& add) {
+      for(auto it = std::lower_bound(on_edges.begin(), on_edges.end(), std::make_tuple(std::uint32_t(e), lo, std::uint32_t(-1)));
+          it != on_edges.end() && std::get<0>(*it) == e && std::get<1>(*it) < hi; ++it)
+        add(std::get<2>(*it));
     };
+    Partition::Vertex_cycle refined;
     for(Partition::Piece& p : region)
     {
-      Partition::Vertex_cycle refined;
-      for(std::size_t k = 0; k < p.vertices.size(); ++k)
-      {
-        const std::uint32_t u = p.vertices[k], w = p.vertices[(k + 1) % p.vertices.size()];
-        refined.push_back(u);
-        for(int l = 0; l < 3; ++l)
-        {
-          const std::uint32_t e = std::uint32_t(m_mesh.edges[p.face][l]);
-          double tu, tw;
-          if(!parameter_on(u, e, tu) || !parameter_on(w, e, tw)) continue;
-          const std::size_t before = refined.size();
-          for(auto it = std::lower_bound(on_edges.begin(), on_edges.end(), std::make_tuple(e, (std::min)(tu, tw), std::uint32_t(-1)));
-              it != on_edges.end() && std::get<0>(*it) == e && std::get<1>(*it) < (std::max)(tu, tw); ++it)
-            if(std::get<2>(*it) != u && std::get<2>(*it) != w) refined.push_back(std::get<2>(*it));
-          if(tu > tw) std::reverse(refined.begin() + std::ptrdiff_t(before), refined.end());
-          break;
-        }
-      }
+      refine(p.vertices, p.face, points, refined);
       p.vertices = refined;
       p.area = piece_area(p.vertices);
       held = held && p.area > 1e-12 * m_mesh.face_areas[p.face];
     }
     // no two vertices of a face at one position (welded by the whole stitching)
-    for(std::size_t a = 0, b = 0; a < region.size() && held; a = b)
+    std::vector<std::pair<Point_d, std::size_t> > positions;
+    for(auto a = region.begin(), b = a; a != region.end() && held; a = b)
     {
-      std::vector<std::pair<Point_d, std::uint32_t> > used;
-      for(b = a; b < region.size() && region[b].face == region[a].face; ++b)
-        for(std::uint32_t id : region[b].vertices) used.emplace_back(out.vertices[id].point, id);
-      std::sort(used.begin(), used.end());
-      for(std::size_t k = 1; k < used.size(); ++k)
-        held = held && (used[k].second == used[k - 1].second || !(used[k].first == used[k - 1].first));
+      b = std::find_if(a, region.end(), [&](const Partition::Piece& p) { return p.face != a->face; });
+      find_coincident(a, b, positions, [&](std::size_t, std::size_t) { held = false; });
     }
     if(!held)
     {
@@ -306,23 +284,24 @@ private:
     return id;
   }
 
-  // Calls `begin_piece(site, number_of_vertices)` for each piece of face f in order, each
-  // followed by `key(k)` for each of its vertices in order. A face reached by nobody, or owned
-  // whole by its only candidate (as the cutter's one piece would be), is one piece: its three
-  // corners.
-  template <class BeginPiece, class Key>
-  void visit_face(std::size_t f, const BeginPiece& begin_piece, const Key& key) const
+  // Appends the pieces of face f to `pieces` in order, each vertex named `id(key)`. A face
+  // reached by nobody, or owned whole by its only candidate (as the cutter's one piece would
+  // be), is one piece: its three corners.
+  template <class Id>
+  void name_face(std::size_t f, std::vector<Partition::Piece>& pieces, const Id& id)
   {
+    m_face_triples.clear();
     if(m_candidates[f].empty() || m_cuts[f].whole_face)
     {
-      begin_piece(m_candidates[f].empty() ? no_site : m_candidates[f][0].site, std::size_t(3));
-      for(int k = 0; k < 3; ++k) key(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]));
+      pieces.push_back(Partition::Piece{ std::uint32_t(f), m_candidates[f].empty() ? no_site : m_candidates[f][0].site, {}, 0. });
+      for(int k = 0; k < 3; ++k) pieces.back().vertices.push_back(std::uint32_t(id(Vertex_key::mesh_vertex(m_mesh.triangles[f][k]))));
       return;
     }
     for(const Face_cuts::Piece sp : m_cuts[f].pieces)
     {
-      begin_piece(m_candidates[f][sp.candidate].site, sp.vertices.size());
-      for(const Symbolic_vertex& v : sp.vertices) key(key_of(f, sp.candidate, v));
+      pieces.push_back(Partition::Piece{ std::uint32_t(f), m_candidates[f][sp.candidate].site, {}, 0. });
+      pieces.back().vertices.reserve(sp.vertices.size());
+      for(const Symbolic_vertex& v : sp.vertices) pieces.back().vertices.push_back(std::uint32_t(id(key_of(f, sp.candidate, v))));
     }
   }
 
@@ -340,9 +319,8 @@ private:
     Partition& out = *m_out;
     m_corner_id.assign(m_mesh.number_of_vertices(), no_id);
     m_edge_crossings_begin.assign(nf + 1, 0);
-    m_face_degenerate.assign(nf, 0);
-    for(std::size_t f = 0; f < nf; ++f) m_face_degenerate[f] = m_cuts[f].degenerate;
-    m_keep_keys = std::find(m_face_degenerate.begin(), m_face_degenerate.end(), 1) != m_face_degenerate.end();
+    m_keep_keys = false;
+    for(std::size_t f = 0; f < nf && !m_keep_keys; ++f) m_keep_keys = m_cuts[f].degenerate;
     out.face_begin.assign(nf + 1, 0);
     std::size_t pieces = 0;
     for(std::size_t f = 0; f < nf; ++f) pieces += number_of_pieces(f);
@@ -359,13 +337,7 @@ private:
       {
         out.face_begin[f] = std::uint32_t(out.pieces.size());
         m_edge_crossings_begin[f] = std::uint32_t(m_edge_crossings.size());
-        m_face_triples.clear();
-        visit_face(f,
-                   [&](std::size_t site, std::size_t n) {
-                     out.pieces.push_back(Partition::Piece{ std::uint32_t(f), site, {}, 0. });
-                     out.pieces.back().vertices.reserve(n);
-                   },
-                   [&](const Vertex_key& k) { out.pieces.back().vertices.push_back(std::uint32_t(id_of(k, f))); });
+        name_face(f, out.pieces, [&](const Vertex_key& k) { return id_of(k, f); });
       }
       out.face_begin[nf] = std::uint32_t(out.pieces.size());
       m_edge_crossings_begin[nf] = std::uint32_t(m_edge_crossings.size());
@@ -399,11 +371,6 @@ private:
 
   bool is_representative(std::size_t id) const { return m_representative.empty() || m_representative[id] == id; }
 
-  bool exact_triple_barycentric(std::size_t f, const Vertex_key& k, std::array<Exact_number, 3>& b) const
-  {
-    return internal::exact_triple_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]), b);
-  }
-
   // Where a vertex lies, exactly: at a corner, on an edge at parameter c[0], or in a face
   // with barycentric coordinates c.
   struct Exact_location
@@ -411,13 +378,7 @@ private:
     Partition::Location_kind kind;
     std::size_t element;
     std::array<Exact_number, 3> c;
-  };
-  struct Exact_location_less
-  {
-    bool operator()(const Exact_location& x, const Exact_location& y) const
-    {
-      return std::tie(x.kind, x.element, x.c) < std::tie(y.kind, y.element, y.c);
-    }
+    bool operator<(const Exact_location& o) const { return std::tie(kind, element, c) < std::tie(o.kind, o.element, o.c); }
   };
 
   Exact_location exact_location(std::size_t id) const
@@ -437,7 +398,7 @@ private:
       return l;
     }
     std::array<Exact_number, 3> b;
-    if(!exact_triple_barycentric(f, k, b))
+    if(!exact_triple_barycentric(values_of(f, k.sites[0]), values_of(f, k.sites[1]), values_of(f, k.sites[2]), b))
       return Exact_location{ Partition::IN_FACE, f, {{ Exact_number(1) / 3, Exact_number(1) / 3, Exact_number(1) / 3 }} };
     int zeros = 0, nonzero = -1;
     for(int c = 0; c < 3; ++c)
@@ -471,11 +432,11 @@ private:
     Partition& out = *m_out;
     m_representative.resize(out.vertices.size());
     std::iota(m_representative.begin(), m_representative.end(), std::size_t(0));
-    std::map<Exact_location, std::size_t, Exact_location_less> groups;
+    std::map<Exact_location, std::size_t> groups;
     std::vector<std::uint8_t> seen(m_origins.size(), 0);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      if(!m_face_degenerate[f]) continue;
+      if(!m_cuts[f].degenerate) continue;
       // the degenerate face and its neighbours: a point on a shared edge has keys in both
       const std::size_t faces_to_scan[4] = { f, m_mesh.neighbors[f][0], m_mesh.neighbors[f][1], m_mesh.neighbors[f][2] };
       for(std::size_t g : faces_to_scan)
@@ -537,7 +498,6 @@ private:
     std::vector<std::uint32_t>().swap(m_corner_id);
     std::vector<Edge_crossing_entry>().swap(m_edge_crossings);
     std::vector<std::uint32_t>().swap(m_edge_crossings_begin);
-    std::vector<std::uint8_t>().swap(m_face_degenerate);
   }
 
   // Step 4: every vertex on a mesh edge goes into the piece edges that run along that edge.
@@ -594,69 +554,24 @@ private:
                     [](const Edge_point& a, const Edge_point& b) { return a.t < b.t || (a.t == b.t && a.id < b.id); });
     });
     auto has_points = [&](std::size_t e) { return edge_begin[e + 1] > edge_begin[e]; };
-    auto range_of = [&](std::size_t e) {
-      return std::make_pair(edge_points.begin() + edge_begin[e], edge_points.begin() + edge_begin[e + 1]);
-    };
-    // the parameter of vertex `id` along mesh edge `e`, if it lies on it
-    auto parameter_on = [&](std::size_t id, std::size_t e, double& t) {
-      const Partition::Vertex& v = out.vertices[id];
-      if(v.kind == Partition::AT_CORNER)
-      {
-        if(v.element == m_mesh.edge_vertices[e][0]) { t = 0.; return true; }
-        if(v.element == m_mesh.edge_vertices[e][1]) { t = 1.; return true; }
-      }
-      else if(v.kind == Partition::ON_EDGE && v.element == e)
-      {
-        t = v.t;
-        return true;
-      }
-      return false;
-    };
-    // the vertices strictly inside the piece edge (u, w) lying along mesh edge e, in order
-    auto between = [&](std::size_t u, std::size_t w, std::size_t e, std::vector<std::size_t>& found) {
-      found.clear();
-      double tu, tw;
-      if(!parameter_on(u, e, tu) || !parameter_on(w, e, tw)) return false;
-      const double lo = (std::min)(tu, tw), hi = (std::max)(tu, tw);
-      const auto r = range_of(e);
-      for(auto it = r.first; it != r.second; ++it)
-        if(it->t > lo && it->t < hi && it->id != u && it->id != w) found.push_back(it->id);
-      if(tu > tw) std::reverse(found.begin(), found.end());
-      return true;
+    auto points = [&](std::size_t e, double lo, double hi, const auto& add) {
+      for(std::uint32_t j = edge_begin[e]; j < edge_begin[e + 1]; ++j)
+        if(edge_points[j].t > lo && edge_points[j].t < hi) add(edge_points[j].id);
     };
     std::vector<std::size_t> inserted(number_of_chunks(out.pieces.size(), chunk), 0);
     for_each_chunk(out.pieces.size(), chunk, m_parallel, [&](std::size_t begin, std::size_t end, std::size_t c) {
-      std::vector<std::size_t> found, refined;
+      std::vector<std::size_t> refined;
       for(std::size_t piece = begin; piece < end; ++piece)
       {
         Partition::Piece& p = out.pieces[piece];
-        const std::size_t f = p.face;
         // a piece whose face has no point on its edges has nothing to receive
         bool receives = false;
-        for(int le = 0; le < 3; ++le) receives |= has_points(m_mesh.edges[f][le]);
+        for(int le = 0; le < 3; ++le) receives |= has_points(m_mesh.edges[p.face][le]);
         if(!receives) continue;
-        const std::size_t n = p.vertices.size();
-        bool changed = false;
-        refined.clear();
-        for(std::size_t k = 0; k < n; ++k)
-        {
-          const std::size_t u = p.vertices[k], w = p.vertices[(k + 1) % n];
-          refined.push_back(u);
-          for(int le = 0; le < 3; ++le)
-          {
-            const std::size_t e = m_mesh.edges[f][le];
-            if(!has_points(e)) continue;
-            if(!between(u, w, e, found)) continue;
-            if(!found.empty())
-            {
-              refined.insert(refined.end(), found.begin(), found.end());
-              inserted[c] += found.size();
-              changed = true;
-            }
-            break;
-          }
-        }
-        if(changed) p.vertices.assign(refined.begin(), refined.end());
+        refine(p.vertices, p.face, points, refined);
+        if(refined.size() == p.vertices.size()) continue;
+        inserted[c] += refined.size() - p.vertices.size();
+        p.vertices.assign(refined.begin(), refined.end());
       }
     });
     for(std::size_t n : inserted) out.inserted_vertices += n;
@@ -688,13 +603,8 @@ private:
              && out.vertices[ids[2]].kind == Partition::AT_CORNER)
             continue;
         }
-        used.clear();
-        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
-          for(std::size_t v : out.pieces[p].vertices) used.emplace_back(out.vertices[v].point, v);
-        std::sort(used.begin(), used.end());
-        for(std::size_t k = 1; k < used.size(); ++k)
-          if(used[k].second != used[k - 1].second && used[k].first == used[k - 1].first)
-            found.emplace_back(used[k - 1].second, used[k].second);
+        find_coincident(out.pieces.begin() + out.face_begin[f], out.pieces.begin() + out.face_begin[f + 1], used,
+                        [&](std::size_t a, std::size_t b) { found.emplace_back(a, b); });
       }
     });
     for(const Vertex_pair& pair : coincident)
@@ -721,6 +631,46 @@ private:
       Partition::Piece& p = out.pieces[k];
       p.area = p.vertices.size() < 3 ? 0. : piece_area(p.vertices);
     });
+  }
+
+  // The vertices of the piece `cycle` of face f into `refined`, with the points strictly inside
+  // each of its edges that runs along a mesh edge, in order: `points(e, lo, hi, add)` calls
+  // `add(id)` for the points of mesh edge e with parameters in (lo, hi), ascending.
+  template <class Points, class Cycle>
+  void refine(const Partition::Vertex_cycle& cycle, std::size_t f, const Points& points, Cycle& refined) const
+  {
+    refined.clear();
+    for(std::size_t k = 0; k < cycle.size(); ++k)
+    {
+      const std::size_t u = cycle[k], w = cycle[(k + 1) % cycle.size()];
+      refined.push_back(u);
+      for(int l = 0; l < 3; ++l)
+      {
+        const std::size_t e = m_mesh.edges[f][l];
+        double tu, tw;
+        if(!m_out->on_mesh_edge(m_mesh, u, e, tu) || !m_out->on_mesh_edge(m_mesh, w, e, tw)) continue;
+        const std::size_t before = refined.size();
+        points(e, (std::min)(tu, tw), (std::max)(tu, tw), [&](std::size_t id) {
+          if(id != u && id != w) refined.push_back(id);
+        });
+        if(tu > tw) std::reverse(refined.begin() + std::ptrdiff_t(before), refined.end());
+        break;   // a piece edge lies along one mesh edge at most
+      }
+    }
+  }
+
+  // Calls `found(a, b)` for each two vertices a, b of the pieces [first, last) at one
+  // position, next to each other in (position, id) order; `used` is scratch.
+  template <class Piece_iterator, class Found>
+  void find_coincident(Piece_iterator first, Piece_iterator last, std::vector<std::pair<Point_d, std::size_t> >& used,
+                       const Found& found) const
+  {
+    used.clear();
+    for(; first != last; ++first)
+      for(std::size_t v : first->vertices) used.emplace_back(m_out->vertices[v].point, v);
+    std::sort(used.begin(), used.end());
+    for(std::size_t k = 1; k < used.size(); ++k)
+      if(used[k].second != used[k - 1].second && used[k].first == used[k - 1].first) found(used[k - 1].second, used[k].second);
   }
 
   double piece_area(const Partition::Vertex_cycle& ids) const
@@ -840,7 +790,6 @@ private:
   std::vector<std::uint32_t> m_corner_id;             // by mesh vertex (ids are 32-bit)
   std::vector<Edge_crossing_entry> m_edge_crossings;  // grouped by the face that named them
   std::vector<std::uint32_t> m_edge_crossings_begin;
-  std::vector<std::uint8_t> m_face_degenerate;
   std::vector<std::size_t> m_representative;          // by weld_exact_ties, if m_keep_keys
 };
 
