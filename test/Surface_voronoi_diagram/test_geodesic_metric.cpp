@@ -186,6 +186,54 @@ TEST_CASE("geodesic metric: distances asked again after forget_distances() are t
   CHECK(g.number_of_computed_distances() > work);   // marched again, not kept
 }
 
+namespace {
+
+// A user's lazy metric over the geodesic distances, with or without the concept's optional
+// members, counting which ones the diagram calls.
+template <bool WithOptionalMembers>
+struct Counting_geodesic
+{
+  typedef SV::Lazy_metric_tag Metric_category;
+  typedef Mesh Triangle_mesh;
+  typedef Mesh::Vertex_index vertex_descriptor;
+  Geodesic geodesic;
+  std::size_t by_vertex = 0, by_index = 0, forgotten = 0;
+  explicit Counting_geodesic(const Mesh& m) : geodesic(m) {}
+  const Mesh& triangle_mesh() const { return geodesic.triangle_mesh(); }
+  void set_sites(const std::vector<Location<Mesh> >& sites) { geodesic.set_sites(sites); }
+  double squared_distance(std::size_t i, vertex_descriptor v) { ++by_vertex; return geodesic.squared_distance(i, v); }
+
+  template <bool B = WithOptionalMembers, class = std::enable_if_t<B> >
+  double indexed_squared_distance(std::size_t i, std::size_t k) { ++by_index; return geodesic.indexed_squared_distance(i, k); }
+  template <bool B = WithOptionalMembers, class = std::enable_if_t<B> >
+  void forget_distances() { ++forgotten; geodesic.forget_distances(); }
+  template <bool B = WithOptionalMembers, class = std::enable_if_t<B> >
+  SV::Prepared_mesh<Mesh> prepared_mesh() const { return geodesic.prepared_mesh(); }
+};
+
+} // namespace
+
+TEST_CASE("geodesic metric: a user's metric with the optional members gets the same shortcuts", "[geodesic][concepts]")
+{
+  Mesh m;
+  GEN::make_torus(m, 1.0, 0.35, 60, 24);
+  const auto sites = area_uniform_locations(m, 40, 5);
+  Counting_geodesic<true> with(m);
+  Counting_geodesic<false> without(m);
+  const long prepared_users = with.prepared_mesh().indexed_mesh().use_count();
+  const CGAL::Surface_voronoi_diagram<Mesh, Counting_geodesic<true> > a(m, with, sites);
+  const CGAL::Surface_voronoi_diagram<Mesh, Counting_geodesic<false> > b(m, without, sites);
+  // the same cells either way
+  for(auto v : vertices(m)) CHECK(a.site_of(v) == b.site_of(v));
+  for(std::size_t i = 0; i < sites.size(); ++i) CHECK(a.cell_area(i) == b.cell_area(i));
+  // the optional members are the ones asked, and the diagram shares the metric's mesh
+  CHECK(with.by_vertex == 0);
+  CHECK(with.by_index > 0);
+  CHECK(with.forgotten == 1);
+  CHECK(with.prepared_mesh().indexed_mesh().use_count() == prepared_users + 1);
+  CHECK(without.by_vertex == with.by_index);
+}
+
 TEST_CASE("geodesic metric: clear errors", "[geodesic][errors]")
 {
   Mesh m;

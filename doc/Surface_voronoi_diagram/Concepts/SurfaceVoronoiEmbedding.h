@@ -71,5 +71,10 @@ public:
   template <class OutputIterator>
   OutputIterator coordinates(vertex_descriptor v, OutputIterator out) const;
 
+  /// optional: the mesh as the model has prepared it (see
+  /// `CGAL::Surface_voronoi::Prepared_mesh`), which a diagram built with this embedding then
+  /// shares instead of preparing the mesh again.
+  CGAL::Surface_voronoi::Prepared_mesh<Triangle_mesh> prepared_mesh() const;
+
   /// @}
 };

@@ -92,4 +92,25 @@ public:
   double squared_distance(std::size_t i, vertex_descriptor v);
 
   /// @}
+
+  /// \name Optional operations
+  /// The package's own metrics have these; a model that has them gets the same savings.
+  /// @{
+
+  /// optional: returns `squared_distance(i, v)` for the `k`-th vertex `v` in the order of
+  /// `vertices(triangle_mesh())`. The diagram asks by this index when the model offers it,
+  /// without looking the vertex up.
+  double indexed_squared_distance(std::size_t i, std::size_t k);
+
+  /// optional: frees what the model keeps of the distances computed so far; a distance asked
+  /// afterwards must be the same. A diagram calls it once its propagation is done, before it
+  /// cuts the faces, when it asks for few distances more.
+  void forget_distances();
+
+  /// optional: the mesh as the model has prepared it (see
+  /// `CGAL::Surface_voronoi::Prepared_mesh`), which a diagram built with this metric then
+  /// shares instead of preparing the mesh again.
+  CGAL::Surface_voronoi::Prepared_mesh<Triangle_mesh> prepared_mesh() const;
+
+  /// @}
 };

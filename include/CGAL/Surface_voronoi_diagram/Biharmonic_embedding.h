@@ -279,10 +279,8 @@ public:
   /// the row of `v` in the matrices above (the order of `vertices(tm)`)
   std::size_t vertex_index(vertex_descriptor v) const { return get(m_mesh->vertex_index, v); }
 
-  /// \cond SKIP_IN_MANUAL
-  // The indexed copy of the mesh, shared with the diagram (an internal hook).
-  const std::shared_ptr<const Surface_voronoi::internal::Indexed_mesh<TriangleMesh> >& indexed_mesh() const { return m_mesh; }
-  /// \endcond
+  /// the mesh as the embedding prepared it, which the diagrams built with it share
+  Surface_voronoi::Prepared_mesh<TriangleMesh> prepared_mesh() const { return Surface_voronoi::Prepared_mesh<TriangleMesh>(m_mesh); }
 
 private:
   void compute(const TriangleMesh& tm, const Vertex_point_map& vpm,

@@ -244,20 +244,21 @@ public:
   /// solves each
   std::size_t number_of_computed_columns() const { return m_computed; }
 
-  /// \cond SKIP_IN_MANUAL
-  // Internal hooks of the diagram: the indexed copy of the mesh it shares, and values keyed
-  // by vertex index.
-  const std::shared_ptr<const Indexed>& indexed_mesh() const { return m_mesh; }
-  double indexed_squared_distance(std::size_t i, std::size_t v)
+  /// the mesh as the metric prepared it, which the diagrams built with it share
+  Prepared_mesh<TriangleMesh> prepared_mesh() const { return Prepared_mesh<TriangleMesh>(m_mesh); }
+
+  /// `squared_distance(i, v)` for the `k`-th vertex `v` in the order of `vertices(tm)`
+  /// \pre `set_sites()` was called
+  /// \throws Input_error if `i` is not a site index or `k` not a vertex index
+  double indexed_squared_distance(std::size_t i, std::size_t k)
   {
     if(i >= m_columns.size())
       throw Input_error("Biharmonic_green_metric: " + std::to_string(i) + " is not a site index");
-    if(v >= m_mesh->number_of_vertices()) throw Input_error("Biharmonic_green_metric: the vertex is not a vertex of the mesh");
+    if(k >= m_mesh->number_of_vertices()) throw Input_error("Biharmonic_green_metric: the vertex is not a vertex of the mesh");
     // exactly zero for the nearest site: fl(a - b) = -fl(b - a)
-    const double d = (m_self[i] - 2 * (*m_columns[i])[v]) + m_offset[v];
+    const double d = (m_self[i] - 2 * (*m_columns[i])[k]) + m_offset[k];
     return d > 0 ? d : 0.;
   }
-  /// \endcond
 
 private:
   // the columns of the sites `missing`, in blocks of the Green's function's block size, runs

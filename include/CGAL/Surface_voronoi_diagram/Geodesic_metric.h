@@ -206,18 +206,19 @@ public:
     return m_marching ? m_marching->accepted_vertices() : 0;
   }
 
-  /// \cond SKIP_IN_MANUAL
-  // Internal hooks of the diagram: the indexed copy of the mesh it shares, and distances
-  // keyed by vertex index.
-  const std::shared_ptr<const Indexed>& indexed_mesh() const { return m_mesh; }
-  double indexed_squared_distance(std::size_t i, std::size_t v)
+  /// the mesh as the metric prepared it, which the diagrams built with it share
+  Prepared_mesh<TriangleMesh> prepared_mesh() const { return Prepared_mesh<TriangleMesh>(m_mesh); }
+
+  /// `squared_distance(i, v)` for the `k`-th vertex `v` in the order of `vertices(tm)`
+  /// \pre `set_sites()` was called
+  /// \throws Input_error if `i` is not a site index or `k` not a vertex index
+  double indexed_squared_distance(std::size_t i, std::size_t k)
   {
     check_site(i);
-    if(v >= m_mesh->number_of_vertices()) throw Input_error("Geodesic_metric: the vertex is not a vertex of the mesh");
-    const double d = m_marching->distance(i, static_cast<std::uint32_t>(v));
+    if(k >= m_mesh->number_of_vertices()) throw Input_error("Geodesic_metric: the vertex is not a vertex of the mesh");
+    const double d = m_marching->distance(i, static_cast<std::uint32_t>(k));
     return d * d;
   }
-  /// \endcond
 
 private:
   void check_site(std::size_t i) const

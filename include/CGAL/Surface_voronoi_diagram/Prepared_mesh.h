@@ -88,6 +88,7 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   Prepared_mesh() {}
+  explicit Prepared_mesh(const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >& mesh) : m_mesh(mesh) {}
   const std::shared_ptr<const internal::Indexed_mesh<TriangleMesh> >& indexed_mesh() const { return m_mesh; }
   bool topology_checked() const { return m_topology_checked; }
   /// \endcond

@@ -62,19 +62,19 @@ template <class Metric>
 struct Has_concurrent_squared_distance<Metric, std::void_t<typename Metric::Has_concurrent_squared_distance> >
   : std::bool_constant<Metric::Has_concurrent_squared_distance::value> {};
 
-// Whether a metric keeps an `Indexed_mesh` of its mesh that the diagram may share.
+// Whether a metric offers the mesh it prepared (`prepared_mesh()`), which the diagram shares.
 template <class Metric, class = void>
-struct Has_indexed_mesh : std::false_type {};
+struct Has_prepared_mesh : std::false_type {};
 template <class Metric>
-struct Has_indexed_mesh<Metric, decltype(void(std::declval<const Metric&>().indexed_mesh()))>
+struct Has_prepared_mesh<Metric, decltype(void(std::declval<const Metric&>().prepared_mesh()))>
   : std::true_type {};
 
 /// the metric's indexed copy of its mesh, or none
 template <class TriangleMesh, class Metric>
 std::shared_ptr<const Indexed_mesh<TriangleMesh> > indexed_mesh_of(const Metric& metric)
 {
-  if constexpr(Has_indexed_mesh<Metric>::value)
-    return metric.indexed_mesh();
+  if constexpr(Has_prepared_mesh<Metric>::value)
+    return metric.prepared_mesh().indexed_mesh();
   else
     return std::shared_ptr<const Indexed_mesh<TriangleMesh> >();
 }
