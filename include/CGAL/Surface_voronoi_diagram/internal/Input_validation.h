@@ -50,7 +50,6 @@ public:
   {
     if(m_count[kind]++ < m_per_kind) m_problems.push_back(Input_problem{ kind, element, other, message });
   }
-  bool has(Input_problem::Kind kind) const { return m_count.count(kind) != 0; }
 
 private:
   std::vector<Input_problem>& m_problems;

@@ -82,16 +82,12 @@ private:
     const std::size_t n = m_mesh.number_of_vertices(), m = m_mesh.number_of_faces();
     CGAL_precondition(m < std::size_t(none) / 3);
     faces.resize(m);
+    splits.clear();
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
       {
         faces[f].edge_length[k] = distance(m_mesh.corner(f, k), m_mesh.corner(f, (k + 1) % 3));
         faces[f].split[k] = none;
-      }
-    splits.clear();
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k)
-      {
         Split s;
         if(find_split(f, k, s))
         {
@@ -99,7 +95,6 @@ private:
           splits.push_back(s);
         }
       }
-
     ring_offsets.assign(n + 1, 0);
     for(const auto& t : m_mesh.triangles)
       for(std::size_t v : t) ++ring_offsets[v + 1];
