@@ -209,8 +209,7 @@ std::vector<std::pair<std::size_t, std::size_t> > find_coincident_sites(const In
     if(p[order[k]] != p[order[k - 1]]) { first = k; continue; }
     pairs.emplace_back(order[first], order[k]);
   }
-  std::sort(pairs.begin(), pairs.end(), [](const std::pair<std::size_t, std::size_t>& a,
-                                           const std::pair<std::size_t, std::size_t>& b) { return a.second < b.second; });
+  std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   return pairs;
 }
 
