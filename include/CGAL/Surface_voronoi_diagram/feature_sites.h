@@ -187,7 +187,6 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  typedef internal::Point_d Point_d;
   typedef internal::Vector_d Vector_d;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -228,7 +227,7 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
 
   // the points, scaled by a power of two so that no square overflows or underflows
   const int exponent = internal::coordinate_exponent(tm, vpm);
-  std::vector<Point_d> points;
+  std::vector<internal::Point_d> points;
   points.reserve(vertex_handles.size());
   for(vertex_descriptor v : vertex_handles) points.push_back(internal::scaled_point(internal::to_point_d(get(vpm, v)), -exponent));
 

@@ -35,10 +35,8 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
-#include <array>
 #include <cmath>
 #include <iterator>
-#include <limits>
 #include <queue>
 #include <type_traits>
 #include <utility>

@@ -224,11 +224,9 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
       const std::array<double, 3> b = {{ 1 - r1, r1 * (1 - r2), r1 * r2 }};
       // a face drawn has a positive density at some corner, so this ends (after at most
       // max/mean draws on average)
-      if(!density.empty())
-      {
-        const double top = (std::max)((std::max)(density[k][0], density[k][1]), density[k][2]);
-        if(!(rng.get_double(0, top) < internal::density_at(density[k], b))) continue;
-      }
+      if(!density.empty() && !(rng.get_double(0, (std::max)({ density[k][0], density[k][1], density[k][2] }))
+                               < internal::density_at(density[k], b)))
+        continue;
       out.push_back(Location(fs[k], b));
       break;
     }
@@ -288,7 +286,6 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
 {
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
   typedef internal::Double_kernel K;
-  typedef K::Point_3 P;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   if(n == 0) return std::vector<Location>();
@@ -300,7 +297,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   const std::vector<Location> placed = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::placed_sites), std::vector<Location>());
   candidates.insert(candidates.end(), placed.begin(), placed.end());
   const std::size_t all = candidates.size();
-  std::vector<P> points;
+  std::vector<internal::Point_d> points;
   points.reserve(m);
   // the faces' areas, kept for the density's integral below
   const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());

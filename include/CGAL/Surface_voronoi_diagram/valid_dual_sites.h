@@ -162,8 +162,7 @@ voronoi_vertex_locations(const Diagram& diagram)
     if(count[v] != 3) continue;
     std::array<std::size_t, 3> key = {{ around[v][0], around[v][1], around[v][2] }};
     std::sort(key.begin(), key.end());
-    if(out.count(key)) continue;
-    out[key] = location_in_face(mesh, partition.pieces[piece_of[v]].face, partition.vertices[v].point);
+    out.emplace(key, location_in_face(mesh, partition.pieces[piece_of[v]].face, partition.vertices[v].point));
   }
   return out;
 }
@@ -188,8 +187,7 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
   const std::size_t fv = get(mesh.face_index, vertex.first);
   const auto up = normal(fv);
   const Point_d at = mesh.point_at(fv, vertex.second);
-  bool found = false;
-  double best = 0;
+  double best = std::numeric_limits<double>::infinity();
   for(std::size_t s : triangle)
   {
     if(normal(data.sites[s].face) * up >= 0) continue;
@@ -215,16 +213,15 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
         const double u = len2 > 0 ? (std::min)(1., (std::max)(0., ((at - a) * ab) / len2)) : 0.;
         const Point_d p = a + u * ab;
         const double d = CGAL::squared_distance(p, at);
-        if(!found || d < best)
+        if(d < best)
         {
-          found = true;
           best = d;
           rim = location_in_face(mesh, f, p);
         }
       }
     }
   }
-  return found;
+  return best < std::numeric_limits<double>::infinity();
 }
 
 // Whether a site from index `first_added` on lies in a face with an edge longer than 1.5

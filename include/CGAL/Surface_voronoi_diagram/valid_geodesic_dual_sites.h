@@ -30,9 +30,7 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
 #include <cstddef>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -136,8 +134,7 @@ add_sites_for_valid_geodesic_dual(const TriangleMesh& tm,
                                   const std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >& sites,
                                   const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
