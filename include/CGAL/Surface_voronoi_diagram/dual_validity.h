@@ -159,7 +159,6 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
 {
   typedef typename Diagram::Geom_traits Geom_traits;
   typedef typename Geom_traits::Point_3 Point_3;
-  typedef typename Geom_traits::Vector_3 Vector_3;
   CGAL_precondition_msg(!diagram.is_cancelled(), "the diagram was cancelled: it has no cells");
   CGAL_precondition(points.size() == diagram.number_of_sites());
   const auto& data = internal::Diagram_access::data(diagram);
@@ -194,7 +193,7 @@ Dual_validity validate_dual_triangulation(const Diagram& diagram, const PointRan
       ++(a < b ? uses.first : uses.second);
     }
     // against the surface at the Voronoi vertex it is dual to, or else at its three sites
-    const Vector_3 normal = traits.construct_cross_product_vector_3_object()(
+    const auto normal = traits.construct_cross_product_vector_3_object()(
         traits.construct_vector_3_object()(points[t[0]], points[t[1]]), traits.construct_vector_3_object()(points[t[0]], points[t[2]]));
     std::array<std::size_t, 3> key = t;
     std::sort(key.begin(), key.end());

@@ -187,7 +187,6 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  typedef internal::Point_d Point_d;
   typedef internal::Vector_d Vector_d;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -210,8 +209,7 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   // the feature edges, their ends, and each vertex's feature edges by increasing index
   std::vector<std::uint8_t> is_feature(edge_handles.size(), 0);
   std::vector<std::array<std::size_t, 2> > ends(edge_handles.size());
-  std::vector<std::size_t> degree(vertex_handles.size(), 0);
-  std::size_t feature_count = 0;
+  std::vector<std::vector<std::size_t> > incident(vertex_handles.size());
   for(std::size_t k = 0; k < edge_handles.size(); ++k)
   {
     const edge_descriptor e = edge_handles[k];
@@ -219,28 +217,17 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
     const halfedge_descriptor h = halfedge(e, tm);
     ends[k] = {{ get(vertex_index, source(h, tm)), get(vertex_index, target(h, tm)) }};
     is_feature[k] = 1;
-    ++degree[ends[k][0]];
-    ++degree[ends[k][1]];
-    ++feature_count;
+    for(std::size_t end : ends[k]) incident[end].push_back(k);
   }
-  if(feature_count == 0) return std::vector<Location>();
-  std::vector<std::size_t> first(vertex_handles.size() + 1, 0);   // incidences of vertex i: [first[i], first[i+1])
-  for(std::size_t i = 0; i < vertex_handles.size(); ++i) first[i + 1] = first[i] + degree[i];
-  std::vector<std::size_t> incident(first.back());
-  {
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for(std::size_t k = 0; k < edge_handles.size(); ++k)
-      if(is_feature[k])
-        for(std::size_t end : ends[k]) incident[fill[end]++] = k;
-  }
+  if(std::count(is_feature.begin(), is_feature.end(), 1) == 0) return std::vector<Location>();
   auto other_end = [&](std::size_t k, std::size_t v) { return ends[k][0] == v ? ends[k][1] : ends[k][0]; };
   auto other_edge = [&](std::size_t v, std::size_t k) {   // at a vertex of degree 2
-    return incident[first[v]] == k ? incident[first[v] + 1] : incident[first[v]];
+    return incident[v][0] == k ? incident[v][1] : incident[v][0];
   };
 
   // the points, scaled by a power of two so that no square overflows or underflows
   const int exponent = internal::coordinate_exponent(tm, vpm);
-  std::vector<Point_d> points;
+  std::vector<internal::Point_d> points;
   points.reserve(vertex_handles.size());
   for(vertex_descriptor v : vertex_handles) points.push_back(internal::scaled_point(internal::to_point_d(get(vpm, v)), -exponent));
 
@@ -261,7 +248,7 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   {
     const auto density_map = get_parameter(np, Surface_voronoi::internal_np::vertex_density_map);
     for(std::size_t i = 0; i < vertex_handles.size(); ++i)
-      if(degree[i] > 0)
+      if(!incident[i].empty())
       {
         density[i] = double(get(density_map, vertex_handles[i]));
         if(!(std::isfinite(density[i]) && density[i] >= 0)) throw Input_error("the vertex densities must be finite and not negative");
@@ -277,10 +264,10 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   std::vector<std::uint8_t> is_corner(vertex_handles.size(), 0);
   for(std::size_t v = 0; v < vertex_handles.size(); ++v)
   {
-    if(degree[v] == 0) continue;
-    if(degree[v] != 2) { is_corner[v] = 1; continue; }
-    const Vector_d in = points[v] - points[other_end(incident[first[v]], v)];
-    const Vector_d out = points[other_end(incident[first[v] + 1], v)] - points[v];
+    if(incident[v].empty()) continue;
+    if(incident[v].size() != 2) { is_corner[v] = 1; continue; }
+    const Vector_d in = points[v] - points[other_end(incident[v][0], v)];
+    const Vector_d out = points[other_end(incident[v][1], v)] - points[v];
     const double turn = std::atan2(std::sqrt(CGAL::cross_product(in, out).squared_length()), in * out);
     is_corner[v] = (turn > turn_limit);
   }
@@ -315,8 +302,8 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
   };
   for(std::size_t v = 0; v < vertex_handles.size(); ++v)
     if(is_corner[v])
-      for(std::size_t i = first[v]; i < first[v + 1]; ++i)
-        if(!walked[incident[i]]) walk(v, incident[i], false);
+      for(std::size_t k : incident[v])
+        if(!walked[k]) walk(v, k, false);
   for(std::size_t k = 0; k < edge_handles.size(); ++k)
   {
     if(!is_feature[k] || walked[k]) continue;
@@ -328,7 +315,7 @@ feature_line_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& n
       smallest = (std::min)(smallest, v);
       edge = other_edge(v, edge);
     } while(v != ends[k][0]);
-    walk(smallest, incident[first[smallest]], true);
+    walk(smallest, incident[smallest][0], true);
   }
   std::sort(chains.begin(), chains.end(), [](const Chain& a, const Chain& b) { return a.smallest_edge < b.smallest_edge; });
 

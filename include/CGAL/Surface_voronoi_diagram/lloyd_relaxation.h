@@ -205,7 +205,6 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
   typedef CGAL::Surface_voronoi_diagram<TriangleMesh, Metric, VPM, Geom_traits, ConcurrencyTag> Diagram;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
   const auto locate_np = CGAL::parameters::vertex_point_map(vpm).geom_traits(choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits)));
@@ -243,14 +242,8 @@ lloyd_relaxation(const TriangleMesh& tm, Metric& metric,
     projection.set_cells(data.candidates, sites.size());
     for(std::size_t i = 0; i < sites.size(); ++i)
     {
-      if(i < first_moving)
-      {
-        moved.push_back(CGAL::Polygon_mesh_processing::construct_point(sites[i], tm, locate_np));
-        continue;
-      }
-      const Location l = projection.locate(centroids[i], i, data.sites[i].face);
-      moved.push_back(CGAL::Polygon_mesh_processing::construct_point(l, tm, locate_np));
-      sites[i] = l;
+      if(i >= first_moving) sites[i] = projection.locate(centroids[i], i, data.sites[i].face);
+      moved.push_back(CGAL::Polygon_mesh_processing::construct_point(sites[i], tm, locate_np));
     }
     // two centroids projecting to one point would make coincident sites: keep the later in place
     std::vector<std::size_t> order(sites.size());

@@ -206,11 +206,9 @@ double weight_for_length(Metric& metric,
                          double length,
                          const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef typename std::remove_const<Metric>::type Plain_metric;
-  typedef typename Plain_metric::Triangle_mesh Mesh;
   if(!std::isfinite(length) || length < 0)
     throw Input_error("weight_for_length: the length must be finite and not negative");
-  const Mesh& tm = metric.triangle_mesh();
+  const auto& tm = metric.triangle_mesh();
   if(degree(site.first, tm) != 3)
     throw Input_error("weight_for_length: the site's face is not a triangle");
   if(length == 0) return 0;

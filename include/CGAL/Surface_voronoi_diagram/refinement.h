@@ -35,10 +35,8 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
-#include <array>
 #include <cmath>
 #include <iterator>
-#include <limits>
 #include <queue>
 #include <type_traits>
 #include <utility>
@@ -298,30 +296,14 @@ refine_for_sites(const TriangleMesh& tm, const LocationRange& sites, PolygonMesh
   {
     const internal::Point_d p = CGAL::Polygon_mesh_processing::construct_point(
         s, tm, CGAL::parameters::vertex_point_map(dvpm).geom_traits(internal::Double_kernel()));
-    F best = GT::null_face();
-    std::array<double, 3> best_b = {{ 1., 0., 0. }};
-    double best_min = -std::numeric_limits<double>::infinity();
-    for(F f : pieces[get(copy_index, s.first)])
-    {
-      const H h = halfedge(f, out);
-      const std::array<double, 3> b = internal::barycentric_coordinates(
-          internal::to_point_d(get(ovpm, source(h, out))), internal::to_point_d(get(ovpm, target(h, out))),
-          internal::to_point_d(get(ovpm, target(next(h, out), out))), p);
-      const double lo = (std::min)((std::min)(b[0], b[1]), b[2]);
-      if(lo > best_min)
-      {
-        best_min = lo;
-        best = f;
-        best_b = b;
-      }
-    }
+    auto best = internal::innermost_face(pieces[get(copy_index, s.first)], out, ovpm, p);
     // a site exactly on an input edge or vertex (a breakline's sites own both sides of it)
     // stays exactly on the piece's edge or vertex there, not a rounding error beside it
     const bool on_input_edge = s.second[0] == 0. || s.second[1] == 0. || s.second[2] == 0.;
     if(on_input_edge)
-      for(double& c : best_b)
+      for(double& c : best.second)
         if(std::abs(c) < 1e-9) c = 0.;
-    r.sites.emplace_back(best, internal::clamped_barycentric(best_b));
+    r.sites.emplace_back(best.first, internal::clamped_barycentric(best.second));
   }
   return r;
 }

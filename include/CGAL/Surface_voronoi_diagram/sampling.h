@@ -21,17 +21,13 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 #include <CGAL/Surface_voronoi_diagram/parameters.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Local_site_spacing.h>
 
 #include <CGAL/assertions.h>
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Random.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -133,17 +129,6 @@ std::vector<std::array<double, 3> > face_corner_densities(const TriangleMesh& tm
   return out;
 }
 
-// The corner densities of each location's face (empty without a density map).
-template <class TriangleMesh, class Location, class NamedParameters>
-std::vector<std::array<double, 3> > location_corner_densities(const TriangleMesh& tm, const std::vector<Location>& locations,
-                                                              const NamedParameters& np)
-{
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs;
-  fs.reserve(locations.size());
-  for(const Location& l : locations) fs.push_back(l.first);
-  return face_corner_densities(tm, fs, np);
-}
-
 inline double density_at(const std::array<double, 3>& d, const std::array<double, 3>& b)
 {
   return b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
@@ -239,11 +224,9 @@ random_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np = CG
       const std::array<double, 3> b = {{ 1 - r1, r1 * (1 - r2), r1 * r2 }};
       // a face drawn has a positive density at some corner, so this ends (after at most
       // max/mean draws on average)
-      if(!density.empty())
-      {
-        const double top = (std::max)((std::max)(density[k][0], density[k][1]), density[k][2]);
-        if(!(rng.get_double(0, top) < internal::density_at(density[k], b))) continue;
-      }
+      if(!density.empty() && !(rng.get_double(0, (std::max)({ density[k][0], density[k][1], density[k][2] }))
+                               < internal::density_at(density[k], b)))
+        continue;
       out.push_back(Location(fs[k], b));
       break;
     }
@@ -303,7 +286,6 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
 {
   typedef CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> Location;
   typedef internal::Double_kernel K;
-  typedef K::Point_3 P;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   if(n == 0) return std::vector<Location>();
@@ -315,7 +297,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   const std::vector<Location> placed = choose_parameter(get_parameter(np, Surface_voronoi::internal_np::placed_sites), std::vector<Location>());
   candidates.insert(candidates.end(), placed.begin(), placed.end());
   const std::size_t all = candidates.size();
-  std::vector<P> points;
+  std::vector<internal::Point_d> points;
   points.reserve(m);
   // the faces' areas, kept for the density's integral below
   const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> fs(faces(tm).begin(), faces(tm).end());
@@ -336,7 +318,9 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     double mass = 0;
     for(std::size_t k = 0; k < fs.size(); ++k)
       mass += face_area[k] * (density[k][0] + density[k][1] + density[k][2]) / 3;
-    const std::vector<std::array<double, 3> > at_candidates = internal::location_corner_densities(tm, candidates, np);
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> candidate_faces;
+    for(const Location& l : candidates) candidate_faces.push_back(l.first);
+    const std::vector<std::array<double, 3> > at_candidates = internal::face_corner_densities(tm, candidate_faces, np);
     for(std::size_t i = 0; i < all; ++i)
       radius_scale[i] = 1 / std::sqrt(internal::density_at(at_candidates[i], candidates[i].second));
     area = mass;
@@ -345,13 +329,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   const double r_max = std::sqrt(area / (2 * std::sqrt(3.) * double(n + placed.size())));
   const double reach = 2 * r_max;
 
-  typedef CGAL::Search_traits_3<K> Base;
-  typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<P>::type, Base> Traits;
-  typedef CGAL::Kd_tree<Traits> Tree;
-  CGAL::Pointer_property_map<P>::type ppm = CGAL::make_property_map(points);
-  Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(all),
-            typename Tree::Splitter(), Traits(ppm));
-  tree.build();
+  const internal::Point_tree tree(points);
 
   std::vector<std::vector<std::pair<std::size_t, double> > > neighbours(all);
   std::vector<double> weight(all, 0.);
@@ -362,7 +340,7 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
   for(std::size_t i = 0; i < all; ++i)
   {
     found.clear();
-    tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(points[i], reach * radius_scale[i], 0., Traits(ppm)));
+    tree.within(points[i], reach * radius_scale[i], std::back_inserter(found));
     for(std::size_t j : found)
       if(j != i && std::sqrt(CGAL::squared_distance(points[i], points[j])) < r_max * (radius_scale[i] + radius_scale[j]))
         pairs.emplace_back((std::min)(i, j), (std::max)(i, j));
@@ -375,10 +353,10 @@ blue_noise_sites(const TriangleMesh& tm, std::size_t n, const CGAL_NP_CLASS& np 
     const double w = std::pow(1 - d / (r_max * (radius_scale[p.first] + radius_scale[p.second])), 8);
     neighbours[p.first].emplace_back(p.second, w);
     neighbours[p.second].emplace_back(p.first, w);
+    // each candidate's weight summed in increasing neighbour order, as the pairs are sorted
+    weight[p.first] += w;
+    weight[p.second] += w;
   }
-  // in increasing neighbour order, as the pairs are sorted
-  for(std::size_t i = 0; i < all; ++i)
-    for(const auto& nw : neighbours[i]) weight[i] += nw.second;
   // eliminate the most crowded candidate first; ties to the higher index, for determinism
   std::set<std::pair<double, std::size_t> > heap;
   for(std::size_t i = 0; i < m; ++i) heap.emplace(weight[i], i);

@@ -179,21 +179,9 @@ insert_sites(const TriangleMesh& tm, const LocationRange& sites,
     Point_3 p = CGAL::Polygon_mesh_processing::construct_point(loc, tm, CGAL::parameters::vertex_point_map(vpm));
 
     // the sub-face that contains the site best (largest smallest barycentric coordinate)
-    F best = F();
-    std::array<double, 3> best_b = {{ -1e300, 0, 0 }};
-    std::array<H, 3> best_h;
-    for(F f : sub_faces[k])
-    {
-      const H h0 = halfedge(f, m);
-      const std::array<H, 3> hs = {{ h0, next(h0, m), next(next(h0, m), m) }};
-      const std::array<double, 3> b = internal::barycentric_coordinates(
-          internal::to_point_d(m.point(source(hs[0], m))), internal::to_point_d(m.point(source(hs[1], m))),
-          internal::to_point_d(m.point(source(hs[2], m))), internal::to_point_d(p));
-      if((std::min)((std::min)(b[0], b[1]), b[2]) > (std::min)((std::min)(best_b[0], best_b[1]), best_b[2]))
-      {
-        best = f; best_b = b; best_h = hs;
-      }
-    }
+    const auto [best, best_b] = internal::innermost_face(sub_faces[k], m, m.points(), internal::to_point_d(p));
+    const H h0 = halfedge(best, m);
+    const std::array<H, 3> best_h = {{ h0, next(h0, m), next(next(h0, m), m) }};
     const double eps = 1e-10;
     int small = 0;
     for(double x : best_b) small += (x <= eps);

@@ -89,8 +89,7 @@ template <class TriangleMesh>
 CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>
 location_in_face(const Indexed_mesh<TriangleMesh>& mesh, std::size_t f, const Point_d& p)
 {
-  const auto& t = mesh.triangles[f];
-  return { mesh.face_handles[f], clamped_barycentric(barycentric_coordinates(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], p)) };
+  return { mesh.face_handles[f], clamped_barycentric(mesh.barycentric_coordinates(f, p)) };
 }
 
 // Per site, the centroid of its piece farthest from it (Euclidean), as a location of the
@@ -163,8 +162,7 @@ voronoi_vertex_locations(const Diagram& diagram)
     if(count[v] != 3) continue;
     std::array<std::size_t, 3> key = {{ around[v][0], around[v][1], around[v][2] }};
     std::sort(key.begin(), key.end());
-    if(out.count(key)) continue;
-    out[key] = location_in_face(mesh, partition.pieces[piece_of[v]].face, partition.vertices[v].point);
+    out.emplace(key, location_in_face(mesh, partition.pieces[piece_of[v]].face, partition.vertices[v].point));
   }
   return out;
 }
@@ -184,14 +182,12 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
   const auto& data = Diagram_access::data(diagram);
   const auto& mesh = *data.mesh;
   auto normal = [&](std::size_t f) {
-    const auto& t = mesh.triangles[f];
-    return CGAL::cross_product(mesh.points[t[1]] - mesh.points[t[0]], mesh.points[t[2]] - mesh.points[t[0]]);
+    return CGAL::cross_product(mesh.corner(f, 1) - mesh.corner(f, 0), mesh.corner(f, 2) - mesh.corner(f, 0));
   };
   const std::size_t fv = get(mesh.face_index, vertex.first);
   const auto up = normal(fv);
   const Point_d at = mesh.point_at(fv, vertex.second);
-  bool found = false;
-  double best = 0;
+  double best = std::numeric_limits<double>::infinity();
   for(std::size_t s : triangle)
   {
     if(normal(data.sites[s].face) * up >= 0) continue;
@@ -217,16 +213,15 @@ bool rim_site_of_flip(const Diagram& diagram, const std::array<std::size_t, 3>& 
         const double u = len2 > 0 ? (std::min)(1., (std::max)(0., ((at - a) * ab) / len2)) : 0.;
         const Point_d p = a + u * ab;
         const double d = CGAL::squared_distance(p, at);
-        if(!found || d < best)
+        if(d < best)
         {
-          found = true;
           best = d;
           rim = location_in_face(mesh, f, p);
         }
       }
     }
   }
-  return found;
+  return best < std::numeric_limits<double>::infinity();
 }
 
 // Whether a site from index `first_added` on lies in a face with an edge longer than 1.5
@@ -368,9 +363,8 @@ add_sites_for_valid_dual(const TriangleMesh& tm, Metric& metric,
     std::vector<std::uint8_t> cut(sites.size(), 0);
     // the cell among `cells` reaching farthest from its site, or none if none reaches at all
     auto widest_of = [&](std::initializer_list<std::size_t> cells) {
-      std::size_t best = *cells.begin();
-      for(std::size_t s : cells)
-        if(reach[s] > reach[best]) best = s;
+      const std::size_t best = *std::max_element(cells.begin(), cells.end(),
+                                                 [&](std::size_t a, std::size_t b) { return reach[a] < reach[b]; });
       return reach[best] > 0 ? best : internal::no_site;
     };
     auto widest = [&](std::initializer_list<std::size_t> cells) {

@@ -30,9 +30,7 @@
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
-#include <algorithm>
 #include <cstddef>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -136,8 +134,7 @@ add_sites_for_valid_geodesic_dual(const TriangleMesh& tm,
                                   const std::vector<CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> >& sites,
                                   const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
 
@@ -162,23 +159,16 @@ add_sites_for_valid_geodesic_dual(const TriangleMesh& tm,
     if(refinement.vertex_limit_reached) break;
     const std::size_t before = r.sites_added;
     const bool on_input = (refinement.edges_split == 0);   // the mesh resolves the sites as it is
-    Valid_dual_result<TriangleMesh> here;
-    if(on_input)
-    {
-      Geodesic_metric<TriangleMesh> metric(tm, CGAL::parameters::vertex_point_map(vpm));
-      here = internal::with_site_parameters(np, [&](const auto& chain) {
-        return add_sites_for_valid_dual<ConcurrencyTag>(tm, metric, r.sites,
-                   parameters::maximum_number_of_added_sites(max_added - before, parameters::stop_on_coarse_mesh(true, chain.vertex_point_map(vpm))));
+    // on the input mesh as it is, or on the refined one
+    auto add_sites = [&](const TriangleMesh& mesh, const auto& mesh_vpm, const auto& mesh_sites) {
+      Geodesic_metric<TriangleMesh> metric(mesh, CGAL::parameters::vertex_point_map(mesh_vpm));
+      return internal::with_site_parameters(np, [&](const auto& chain) {
+        return add_sites_for_valid_dual<ConcurrencyTag>(mesh, metric, mesh_sites,
+                   parameters::maximum_number_of_added_sites(max_added - before, parameters::stop_on_coarse_mesh(true, chain.vertex_point_map(mesh_vpm))));
       });
-    }
-    else
-    {
-      Geodesic_metric<TriangleMesh> metric(refined);
-      here = internal::with_site_parameters(np, [&](const auto& chain) {
-        return add_sites_for_valid_dual<ConcurrencyTag>(refined, metric, refinement.sites,
-                   parameters::maximum_number_of_added_sites(max_added - before, parameters::stop_on_coarse_mesh(true, chain)));
-      });
-    }
+    };
+    const Valid_dual_result<TriangleMesh> here = on_input ? add_sites(tm, vpm, r.sites)
+                                                          : add_sites(refined, get_const_property_map(CGAL::vertex_point, refined), refinement.sites);
     r.validity = here.validity;
     r.rounds += here.rounds;
     r.nothing_to_cut = here.nothing_to_cut;

@@ -161,28 +161,19 @@ std::vector<std::size_t> make_voronoi_polygon_mesh(const Diagram& diagram, Polyg
     if(!is_face[s]) continue;
     polygon.clear();
     // a disk cell passes each vertex of its boundary once
+    // (a cell with no boundary halfedge is not closed)
     const Halfedge start = first[s];
     Halfedge h = start;
     bool closed = false;
-    if(start == Halfedge())
-    {
-      not_written.push_back(s);
-      continue;
-    }
-    for(std::size_t steps = 0; steps < mesh.number_of_halfedges() && !closed; ++steps)
+    for(std::size_t steps = 0; start != Halfedge() && steps < mesh.number_of_halfedges() && !closed; ++steps)
     {
       polygon.push_back(vertex_of(mesh.source(h), std::int64_t(s)));
       h = arrangement.next_on_region_boundary(h);
       closed = (h == start);
     }
-    face_descriptor f = GT::null_face();
-    if(closed && polygon.size() >= 3) f = CGAL::Euler::add_face(polygon, out);
-    if(f == GT::null_face())
-    {
-      not_written.push_back(s);
-      continue;
-    }
-    put(face_site, f, internal::site_value<Site_value>(s));
+    const face_descriptor f = (closed && polygon.size() >= 3) ? CGAL::Euler::add_face(polygon, out) : GT::null_face();
+    if(f == GT::null_face()) not_written.push_back(s);
+    else put(face_site, f, internal::site_value<Site_value>(s));
   }
   // the corners of faces that could not be added
   for(vertex_descriptor v : created)

@@ -30,6 +30,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace CGAL {
 namespace Surface_voronoi {
@@ -173,6 +175,29 @@ locate_in_face(const Point& p, typename boost::graph_traits<TriangleMesh>::face_
   if(!is_needle(p0, p1, p2))
     return CGAL::Polygon_mesh_processing::locate_in_face(p, f, tm, CGAL::parameters::vertex_point_map(vpm).geom_traits(gt));
   return CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>(f, barycentric_coordinates(p0, p1, p2, to_point_d(p)));
+}
+
+// Among the faces `fs` of `pm`, the one in which `p` has the largest smallest barycentric
+// coordinate (the first among equals; a null face if `fs` is empty), and those coordinates
+template <class FaceRange, class PolygonMesh, class VertexPointMap>
+std::pair<typename boost::graph_traits<PolygonMesh>::face_descriptor, Barycentric>
+innermost_face(const FaceRange& fs, const PolygonMesh& pm, const VertexPointMap& vpm, const Point_d& p)
+{
+  std::pair<typename boost::graph_traits<PolygonMesh>::face_descriptor, Barycentric> best(
+      boost::graph_traits<PolygonMesh>::null_face(), {{ 1., 0., 0. }});
+  double best_min = -std::numeric_limits<double>::infinity();
+  for(const auto f : fs)
+  {
+    const auto h = halfedge(f, pm);
+    const Barycentric b = barycentric_coordinates(to_point_d(get(vpm, source(h, pm))), to_point_d(get(vpm, target(h, pm))),
+                                                  to_point_d(get(vpm, target(next(h, pm), pm))), p);
+    if((std::min)({ b[0], b[1], b[2] }) > best_min)
+    {
+      best_min = (std::min)({ b[0], b[1], b[2] });
+      best = { f, b };
+    }
+  }
+  return best;
 }
 
 } // namespace internal

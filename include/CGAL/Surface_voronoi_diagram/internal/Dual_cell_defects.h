@@ -85,7 +85,6 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   const Mesh& arrangement = labelled.mesh();
   const std::size_t n = diagram.number_of_sites();
   const std::int64_t border = Labelled_arrangement::border;
-  auto label = [&](Halfedge h) { return labelled.label(h); };
 
   labelled.cells_not_disks(n, cells_not_disks);
 
@@ -95,7 +94,7 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
   for(Mesh::Edge_index e : arrangement.edges())
   {
     const Halfedge h = arrangement.halfedge(e), o = arrangement.opposite(h);
-    const std::int64_t a = label(h), b = label(o);
+    const std::int64_t a = labelled.label(h), b = labelled.label(o);
     if(a >= 0 && b >= 0 && a != b)
       bisector_edges.emplace_back(Pair((std::min)(a, b), (std::max)(a, b)), Pair(arrangement.source(h), arrangement.target(h)));
   }
@@ -162,11 +161,8 @@ void find_dual_cell_defects(const Diagram& diagram, std::vector<std::size_t>& ce
 template <class TriangleMesh>
 std::array<double, 3> site_face_normal(const Indexed_mesh<TriangleMesh>& mesh, const Site& site)
 {
-  const auto& t = mesh.triangles[site.face];
-  const Point_d& a = mesh.points[t[0]];
-  const Point_d& b = mesh.points[t[1]];
-  const Point_d& c = mesh.points[t[2]];
-  const Vector_d normal = CGAL::cross_product(b - a, c - a);
+  const std::size_t f = site.face;
+  const Vector_d normal = CGAL::cross_product(mesh.corner(f, 1) - mesh.corner(f, 0), mesh.corner(f, 2) - mesh.corner(f, 0));
   const double length = std::sqrt(normal.squared_length());
   if(!(length > 0)) return {{ 0., 0., 0. }};
   return {{ normal.x() / length, normal.y() / length, normal.z() / length }};

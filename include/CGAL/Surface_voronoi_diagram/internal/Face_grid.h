@@ -21,6 +21,8 @@
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 
+#include <CGAL/Bbox_3.h>
+
 #include <algorithm>
 #include <array>
 #include <cfloat>
@@ -44,12 +46,12 @@ public:
     double extent = 0;
     for(std::size_t f = 0; f < m_faces; ++f)
     {
-      const Box b = box_of(f, corner);
+      const CGAL::Bbox_3 b = box_of(f, corner);
       for(int a = 0; a < 3; ++a)
       {
-        m_low[a] = (std::min)(m_low[a], b[0][a]);
-        m_high[a] = (std::max)(m_high[a], b[1][a]);
-        extent += (b[1][a] - b[0][a]) / 3;
+        m_low[a] = (std::min)(m_low[a], b.min(a));
+        m_high[a] = (std::max)(m_high[a], b.max(a));
+        extent += (b.max(a) - b.min(a)) / 3;
       }
     }
     if(m_faces == 0) return;
@@ -73,9 +75,9 @@ public:
     {
       for(std::size_t f = 0; f < m_faces; ++f)
       {
-        const Box b = box_of(f, corner);
+        const CGAL::Bbox_3 b = box_of(f, corner);
         std::array<std::size_t, 3> lo, hi;
-        for(int a = 0; a < 3; ++a) lo[a] = cell(b[0][a], a), hi[a] = cell(b[1][a], a);
+        for(int a = 0; a < 3; ++a) lo[a] = cell(b.min(a), a), hi[a] = cell(b.max(a), a);
         if((hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1) > 64)
         {
           if(pass == 0) m_large.push_back(std::uint32_t(f));
@@ -146,16 +148,10 @@ public:
   }
 
 private:
-  typedef std::array<std::array<double, 3>, 2> Box;
-
   template <class Corner>
-  static Box box_of(std::size_t f, const Corner& corner)
+  static CGAL::Bbox_3 box_of(std::size_t f, const Corner& corner)
   {
-    Box b;
-    for(int a = 0; a < 3; ++a)
-      b[0][a] = (std::min)({ corner(f, 0)[a], corner(f, 1)[a], corner(f, 2)[a] }),
-      b[1][a] = (std::max)({ corner(f, 0)[a], corner(f, 1)[a], corner(f, 2)[a] });
-    return b;
+    return corner(f, 0).bbox() + corner(f, 1).bbox() + corner(f, 2).bbox();
   }
 
   // the cell of coordinate x along axis a, clamped to the grid

@@ -50,7 +50,6 @@ public:
   {
     if(m_count[kind]++ < m_per_kind) m_problems.push_back(Input_problem{ kind, element, other, message });
   }
-  bool has(Input_problem::Kind kind) const { return m_count.count(kind) != 0; }
 
 private:
   std::vector<Input_problem>& m_problems;
@@ -210,8 +209,7 @@ std::vector<std::pair<std::size_t, std::size_t> > find_coincident_sites(const In
     if(p[order[k]] != p[order[k - 1]]) { first = k; continue; }
     pairs.emplace_back(order[first], order[k]);
   }
-  std::sort(pairs.begin(), pairs.end(), [](const std::pair<std::size_t, std::size_t>& a,
-                                           const std::pair<std::size_t, std::size_t>& b) { return a.second < b.second; });
+  std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   return pairs;
 }
 

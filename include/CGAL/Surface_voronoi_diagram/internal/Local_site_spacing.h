@@ -15,7 +15,8 @@
 // spaced sites get the mean rule). A neighbour is a site whose face does not face away from
 // the site's own (positive dot product of the normals): across a thin wall the straight line
 // is short while the surface between the two sides is long, and counting such pairs would
-// refine thin parts whole.
+// refine thin parts whole. The kd-tree of points that finds the nearest sites here serves the
+// blue-noise sampling and the global nearest candidates too.
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_LOCAL_SITE_SPACING_H
@@ -24,6 +25,7 @@
 
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 
+#include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
@@ -63,15 +65,40 @@ site_points_and_normals(const TriangleMesh& tm, const LocationRange& sites, cons
   return out;
 }
 
+// A kd-tree of the indices of `points`, which must outlive it: the searches of the site
+// spacing here, of the blue-noise sampling and of the global nearest candidates.
+class Point_tree
+{
+public:
+  typedef CGAL::Pointer_property_map<Point_d>::const_type Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<Double_kernel> > Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+
+  explicit Point_tree(const std::vector<Point_d>& points)
+    : m_map(CGAL::make_property_map(points)),
+      m_tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(points.size()),
+             Search::Tree::Splitter(), Traits(m_map))
+  {
+    m_tree.build();
+  }
+
+  /// the `k` points nearest to `p`, nearest first, as pairs (index, squared distance)
+  Search nearest(const Point_d& p, unsigned int k) const { return Search(m_tree, p, k, 0, true, Search::Distance(m_map)); }
+
+  /// appends to `out` the indices of the points within `radius` of `p`
+  template <class OutputIterator>
+  void within(const Point_d& p, double radius, OutputIterator out) const
+  {
+    m_tree.search(out, CGAL::Fuzzy_sphere<Traits>(p, radius, 0., Traits(m_map)));
+  }
+
+private:
+  Point_map m_map;
+  Search::Tree m_tree;
+};
+
 class Local_site_spacing
 {
-  typedef CGAL::Search_traits_3<Double_kernel> Base;
-  typedef CGAL::Pointer_property_map<Point_d>::const_type Point_map;
-  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef Search::Tree Tree;
-  typedef Search::Distance Distance;
-
 public:
   /// the smallest spacing, as a fraction of the mean one
   static constexpr double floor_ratio = 1. / 16;
@@ -86,17 +113,13 @@ public:
   {
     const std::vector<Vector_d>& normals = sites.second;
     if(m_points.empty()) return;
-    const Point_map map = CGAL::make_property_map(static_cast<const std::vector<Point_d>&>(m_points));
-    m_tree.reset(new Tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(m_points.size()),
-                          Tree::Splitter(), Traits(map)));
-    m_tree->build();
+    m_tree.reset(new Point_tree(m_points));
     m_spacing.assign(m_points.size(), m_mean);
     for(std::size_t i = 0; i < m_points.size(); ++i)
     {
       // the nearest neighbour among the few nearest sites (beyond them, the mean spacing)
-      Search search(*m_tree, m_points[i], 8, 0, true, Distance(map));
       double nearest = m_mean;
-      for(const auto& found : search)
+      for(const auto& found : m_tree->nearest(m_points[i], 8))
         if(found.first != i && are_neighbours(normals[found.first], normals[i]))
         {
           nearest = (std::min)(nearest, std::sqrt(found.second));
@@ -111,16 +134,14 @@ public:
   double operator()(const Point_d& x) const
   {
     if(!m_tree) return m_mean;
-    const Point_map map = CGAL::make_property_map(static_cast<const std::vector<Point_d>&>(m_points));
-    Search search(*m_tree, x, 1, 0, true, Distance(map));
-    const auto nearest = *search.begin();
+    const auto nearest = *m_tree->nearest(x, 1).begin();
     return (std::min)(m_mean, (std::max)(m_spacing[nearest.first], std::sqrt(nearest.second)));
   }
 
 private:
   std::vector<Point_d> m_points;
   double m_mean;
-  std::unique_ptr<Tree> m_tree;
+  std::unique_ptr<Point_tree> m_tree;
   std::vector<double> m_spacing;
 };
 

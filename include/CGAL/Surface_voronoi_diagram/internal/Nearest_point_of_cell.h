@@ -53,12 +53,9 @@ public:
     m_radius.resize(nf);
     for(std::size_t f = 0; f < nf; ++f)
     {
-      const Point_d& a = mesh.corner(f, 0);
-      const Point_d& b = mesh.corner(f, 1);
-      const Point_d& c = mesh.corner(f, 2);
-      m_center[f] = Point_d((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3);
-      const double r2 = (std::max)((std::max)(squared_length(a - m_center[f]), squared_length(b - m_center[f])),
-                                   squared_length(c - m_center[f]));
+      m_center[f] = CGAL::centroid(mesh.corner(f, 0), mesh.corner(f, 1), mesh.corner(f, 2));
+      double r2 = squared_length(mesh.corner(f, 0) - m_center[f]);
+      for(int k = 1; k < 3; ++k) r2 = (std::max)(r2, squared_length(mesh.corner(f, k) - m_center[f]));
       m_radius[f] = std::sqrt(r2);
     }
   }

@@ -21,16 +21,12 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Local_site_spacing.h>
 
-#include <CGAL/Fuzzy_sphere.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 namespace CGAL {
@@ -57,31 +53,19 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
 
   if(d == 3 && !has_weights)
   {
-    typedef Double_kernel K;
-    typedef K::Point_3 P;
-    std::vector<P> site_points(number_of_sites);
+    std::vector<Point_d> site_points(number_of_sites);
     for(std::size_t i = 0; i < number_of_sites; ++i)
     {
       const double* s = fields.site_coordinates(i);
-      site_points[i] = P(s[0], s[1], s[2]);
+      site_points[i] = Point_d(s[0], s[1], s[2]);
     }
-    typedef CGAL::Search_traits_3<K> Base_traits;
-    typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<P>::type, Base_traits> Traits;
-    typedef CGAL::Kd_tree<Traits> Tree;
-    typedef CGAL::Orthogonal_k_neighbor_search<Traits> Knn;
-    typedef typename Knn::Distance Distance;
-    CGAL::Pointer_property_map<P>::type ppm = CGAL::make_property_map(site_points);
-    Tree tree(boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(number_of_sites),
-              typename Tree::Splitter(), Traits(ppm));
-    tree.build();
-    Distance distance(ppm);
+    const Point_tree tree(site_points);
 
     std::vector<double> nearest(mesh.number_of_vertices());
     for(std::size_t v = 0; v < nearest.size(); ++v)
     {
       const double* x = fields.vertex_coordinates(v);
-      Knn search(tree, P(x[0], x[1], x[2]), 1, 0, true, distance);
-      nearest[v] = std::sqrt(search.begin()->second);
+      nearest[v] = std::sqrt(tree.nearest(Point_d(x[0], x[1], x[2]), 1).begin()->second);
     }
     std::vector<std::size_t> found;
     for(std::size_t f = 0; f < nf; ++f)
@@ -108,7 +92,7 @@ void global_nearest_candidates(const Indexed_mesh<TriangleMesh>& mesh,
       // rho + ell + min_k nearest(v_k) of the centroid (slightly enlarged for rounding).
       const double r = (rho + ell + dmin) * (1 + 1e-9) + 1e-300;
       found.clear();
-      tree.search(std::back_inserter(found), CGAL::Fuzzy_sphere<Traits>(P(c[0], c[1], c[2]), r, 0., Traits(ppm)));
+      tree.within(Point_d(c[0], c[1], c[2]), r, std::back_inserter(found));
       std::sort(found.begin(), found.end());
       for(std::size_t s : found) add(f, s);
     }

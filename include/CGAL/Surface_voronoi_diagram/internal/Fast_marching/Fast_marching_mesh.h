@@ -82,16 +82,12 @@ private:
     const std::size_t n = m_mesh.number_of_vertices(), m = m_mesh.number_of_faces();
     CGAL_precondition(m < std::size_t(none) / 3);
     faces.resize(m);
+    splits.clear();
     for(std::size_t f = 0; f < m; ++f)
       for(int k = 0; k < 3; ++k)
       {
         faces[f].edge_length[k] = distance(m_mesh.corner(f, k), m_mesh.corner(f, (k + 1) % 3));
         faces[f].split[k] = none;
-      }
-    splits.clear();
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k)
-      {
         Split s;
         if(find_split(f, k, s))
         {
@@ -99,22 +95,17 @@ private:
           splits.push_back(s);
         }
       }
-
-    ring_offsets.assign(n + 1, 0);
-    for(const auto& t : m_mesh.triangles)
-      for(std::size_t v : t) ++ring_offsets[v + 1];
-    for(std::size_t v = 0; v < n; ++v) ring_offsets[v + 1] += ring_offsets[v];
-    ring.resize(ring_offsets[n]);
-    std::vector<std::uint32_t> fill(ring_offsets.begin(), ring_offsets.end() - 1);
-    for(std::size_t f = 0; f < m; ++f)
-      for(int k = 0; k < 3; ++k)
-        ring[fill[vertex(f, k)]++] = static_cast<std::uint32_t>(3 * f + k);
-    vertex_split_offsets.assign(n + 1, 0);
-    for(const Split& s : splits) ++vertex_split_offsets[s.vertex + 1];
-    for(std::size_t v = 0; v < n; ++v) vertex_split_offsets[v + 1] += vertex_split_offsets[v];
-    vertex_splits.resize(splits.size());
-    fill.assign(vertex_split_offsets.begin(), vertex_split_offsets.end() - 1);
-    for(std::size_t s = 0; s < splits.size(); ++s) vertex_splits[fill[splits[s].vertex]++] = static_cast<std::uint32_t>(s);
+    // items 0 .. count - 1 grouped by vertex key(i), in increasing order within a vertex (CSR)
+    auto group = [n](std::size_t count, const auto& key, std::vector<std::uint32_t>& offsets, std::vector<std::uint32_t>& items) {
+      offsets.assign(n + 1, 0);
+      for(std::size_t i = 0; i < count; ++i) ++offsets[key(i) + 1];
+      for(std::size_t v = 0; v < n; ++v) offsets[v + 1] += offsets[v];
+      items.resize(count);
+      std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+      for(std::size_t i = 0; i < count; ++i) items[fill[key(i)]++] = static_cast<std::uint32_t>(i);
+    };
+    group(3 * m, [this](std::size_t c) { return vertex(c / 3, int(c % 3)); }, ring_offsets, ring);
+    group(splits.size(), [this](std::size_t s) { return splits[s].vertex; }, vertex_split_offsets, vertex_splits);
   }
 
   // Unfolds the faces beyond the edge opposite an obtuse corner, one after the other, until a
