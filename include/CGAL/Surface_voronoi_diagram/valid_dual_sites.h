@@ -150,10 +150,10 @@ voronoi_vertex_locations(const Diagram& diagram)
     for(std::size_t v : piece.vertices)
     {
       if(piece_of[v] == no_site) piece_of[v] = p;
+      // four distinct sites are enough to rule a vertex out (only those of three are kept)
       std::array<std::size_t, 4>& a = around[v];
-      if(std::find(a.begin(), a.begin() + count[v], piece.site) != a.begin() + count[v]) continue;
-      if(count[v] < 4) a[count[v]] = piece.site;
-      if(count[v] < 5) ++count[v];
+      if(count[v] == 4 || std::find(a.begin(), a.begin() + count[v], piece.site) != a.begin() + count[v]) continue;
+      a[count[v]++] = piece.site;
     }
   }
   std::map<std::array<std::size_t, 3>, CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double> > out;
