@@ -1376,6 +1376,11 @@ TEST_CASE("program: --stats prints every required key with a numeric value", "[p
   CHECK(stat_value(stats, "lloyd") > 0);
   CHECK(stat_value(stats, "lloyd_energy_2") >= 0);
   CHECK(stat_value(stats, "lloyd_energy_2") <= stat_value(stats, "lloyd_energy_0"));
+  // and the seconds of each of the K steps, which the relaxation's time holds
+  CHECK(stat_value(stats, "lloyd_step_1") > 0);
+  CHECK(stat_value(stats, "lloyd_step_2") > 0);
+  CHECK(stat_value(stats, "lloyd_step_1") + stat_value(stats, "lloyd_step_2") <= stat_value(stats, "lloyd"));
+  CHECK(stats.count("lloyd_step_3") == 0);
 }
 
 TEST_CASE("program: --valid-dual appends sites until the dual is valid, the given sites first and unmoved", "[program][dual]")

@@ -71,6 +71,7 @@ extern "C" void openblas_set_num_threads(int) __attribute__((weak));
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -865,6 +866,14 @@ int run_main(int argc, char** argv)
   // with --insert-sites the relaxed sites are inserted afterwards
   std::vector<double> lloyd_energies;
   double lloyd_seconds = 0;   // every iteration (the metric they share built before)
+  // When each of the K + 1 diagrams was done: the callback is told (k + f) / (K + 1) while
+  // diagram k is computed, and (k + 1) / (K + 1) once it is. Step k is diagram k's time and the
+  // moving of the sites before it.
+  std::vector<Clock::time_point> lloyd_done;
+  const std::function<bool(double)> lloyd_progress = [&](double fraction) {
+    if(fraction * double(args.lloyd + 1) >= double(lloyd_done.size() + 1) - 1e-9) lloyd_done.push_back(Clock::now());
+    return true;
+  };
   if(args.lloyd > 0)
   {
     try
@@ -874,7 +883,8 @@ int run_main(int argc, char** argv)
       auto relax = [&](auto& metric) {
         auto run = [&](const auto& np) { return SV::lloyd_relaxation<CGAL::Parallel_if_available_tag>(mesh, metric, locations, np); };
         const auto steps = SV::parameters::prepared_mesh(input_metric.prepared(),
-            SV::parameters::first_moving_site(feature_sites.size(), CGAL::parameters::number_of_iterations(args.lloyd)));
+            SV::parameters::first_moving_site(feature_sites.size(),
+                CGAL::parameters::number_of_iterations(args.lloyd).callback(lloyd_progress)));
         return density
           ? with_diagram_parameters(choices, SV::parameters::vertex_density_map(*density, steps), run)
           : with_diagram_parameters(choices, steps, run);
@@ -1058,6 +1068,9 @@ int run_main(int argc, char** argv)
   if(args.stats)
     for(std::size_t k = 0; k < lloyd_energies.size(); ++k)
       std::cout << "lloyd_energy_" << k << ": " << std::ldexp(lloyd_energies[k], 4 * args.scale) << "\n";   // area x squared length
+  if(args.stats && lloyd_done.size() == args.lloyd + 1)
+    for(std::size_t k = 1; k < lloyd_done.size(); ++k)
+      std::cout << "lloyd_step_" << k << ": " << std::chrono::duration<double>(lloyd_done[k] - lloyd_done[k - 1]).count() << "\n";
   if(!args.sites_out.empty())
   {
     // the weights go with the sites, so that a power diagram reads back as the same diagram;

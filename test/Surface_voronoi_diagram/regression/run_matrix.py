@@ -461,7 +461,7 @@ def run_entry(program, name, args, outputs, inputs, work):
     for line in r.stdout.decode().splitlines():
         if ":" in line:
             k, v = line.split(":", 1)
-            if k.strip() not in TIMING_KEYS:
+            if k.strip() not in TIMING_KEYS and not k.startswith("lloyd_step_"):
                 stats.append("%s=%s" % (k.strip(), v.strip()))
     lines.append("stats: " + " ".join(stats))
     lines.append("files: " + " ".join(o for o in outputs if os.path.exists(os.path.join(folder, o))))
