@@ -449,10 +449,11 @@ private:
   Face_link link(std::size_t f) const { return m_links.empty() ? make_link(f) : m_links[f]; }
 
   // The list of face f: the propagation's, or in repropagate(), a copy of the table's made
-  // when the face is first reached.
-  Candidate_list& list(std::size_t f)
+  // when the face is first reached (apart, so that the first propagation's stays inline).
+  Candidate_list& list(std::size_t f) { return m_table ? reached_list(f) : candidates[f]; }
+
+  Candidate_list& reached_list(std::size_t f)
   {
-    if(!m_table) return candidates[f];
     const std::pair<Reached*, bool> r = m_reached.insert(static_cast<std::uint32_t>(f));
     if(r.second)
     {
@@ -525,8 +526,8 @@ private:
     queue_unless_dominated(front, x, f);
   }
 
-  // Offers the field of the candidate `from` on face `from_face` across the face's local edge
-  // k (carried_across()). Into another block, the offer goes to the outbox.
+  // Offers the field of the candidate `from` across local edge k of its face, whose links are
+  // `l` (carried_across()). Into another block, the offer goes to the outbox.
   void offer_across(Front& front, const Candidate& from, const Face_link& l, int k)
   {
     const std::size_t f = l.neighbor[k];

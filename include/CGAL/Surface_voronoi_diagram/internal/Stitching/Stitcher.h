@@ -124,11 +124,17 @@ public:
       if(r.second) r.first->second = std::uint32_t(new_id(k, f));
       return std::size_t(r.first->second);
     };
+    std::vector<std::size_t> faces;       // the region's
+    std::vector<std::uint32_t> went, kept;   // the ids of its old pieces but corners, of the pieces around
     for(std::size_t f = 0; f < nf && held; ++f)
       if(in[f])
       {
         held = !m_cuts[f].degenerate;
         name_face(f, region, [&](const Vertex_key& k) { return id_in_region(k, f); });
+        faces.push_back(f);
+        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+          for(std::uint32_t id : out.pieces[p].vertices)
+            if(out.vertices[id].kind != Partition::AT_CORNER) went.push_back(id);
       }
     // the points on each edge of the region, from its pieces and those across its border
     std::vector<std::tuple<std::uint32_t, double, std::uint32_t> > on_edges;   // (edge, t, id)
@@ -174,16 +180,6 @@ public:
     }
     // The ids only the region's old pieces used go to its new vertices; the vertices are
     // renumbered all over only where fewer are new than went (none may stay unused).
-    std::vector<std::size_t> faces;
-    std::vector<std::uint32_t> went, kept;
-    for(std::size_t f = 0; f < nf; ++f)
-      if(in[f])
-      {
-        faces.push_back(f);
-        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
-          for(std::uint32_t id : out.pieces[p].vertices)
-            if(out.vertices[id].kind != Partition::AT_CORNER) went.push_back(id);
-      }
     for(const Partition::Piece& p : region) kept.insert(kept.end(), p.vertices.begin(), p.vertices.end());
     for(const std::tuple<std::uint32_t, double, std::uint32_t>& x : on_edges) kept.push_back(std::get<2>(x));
     for(std::vector<std::uint32_t>* ids : { &went, &kept })
