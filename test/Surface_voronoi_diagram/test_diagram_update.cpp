@@ -8,6 +8,7 @@
 #include <CGAL/Surface_voronoi_diagram/Geodesic_metric.h>
 #include <test_meshes.h>
 
+#include <algorithm>
 #include <vector>
 
 // this file's own names: the suite compiles its files together (see CMakeLists.txt)
@@ -43,6 +44,22 @@ void check_same_diagram(const Diagram& updated, const Diagram& fresh)
   }
   CHECK(other_owner == 0);
   CHECK(other_area == 0);
+  // the same vertices, each used by a piece, at the same points around every piece
+  REQUIRE(updated.number_of_arrangement_vertices() == fresh.number_of_arrangement_vertices());
+  std::vector<std::uint8_t> used(updated.number_of_arrangement_vertices(), 0);
+  std::size_t other_corner = 0;
+  for(std::size_t k = 0; k < a.size(); ++k)
+  {
+    REQUIRE(a[k].vertices.size() == b[k].vertices.size());
+    for(std::size_t j = 0; j < a[k].vertices.size(); ++j)
+    {
+      used[a[k].vertices[j]] = 1;
+      other_corner += !(CGAL::squared_distance(updated.arrangement_point(a[k].vertices[j]),
+                                               fresh.arrangement_point(b[k].vertices[j])) <= tolerance * tolerance);
+    }
+  }
+  CHECK(other_corner == 0);
+  CHECK(std::count(used.begin(), used.end(), 0) == 0);
   for(auto v : vertices(updated.triangle_mesh())) CHECK(updated.site_of(v) == fresh.site_of(v));
   for(std::size_t i = 0; i < fresh.number_of_sites(); ++i)
   {

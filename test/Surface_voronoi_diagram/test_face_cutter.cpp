@@ -404,8 +404,9 @@ TEST_CASE("face cuts: the flat store gives back every face's cut, also after fac
   SVI::Face_cuts in_order, in_chunks;
   in_order.reset(nf);
   in_chunks.reset(nf);
-  in_order.cut(lists, nf, [](std::size_t k) { return k; }, false);
-  in_chunks.cut(lists, nf, [](std::size_t k) { return k; }, true);
+  SVI::Candidate_table table{ SVI::Candidate_lists(lists) };
+  in_order.cut(table, nf, [](std::size_t k) { return k; }, false);
+  in_chunks.cut(table, nf, [](std::size_t k) { return k; }, true);
   CHECK(all_same(in_order) == 0);
   CHECK(all_same(in_chunks) == 0);
 
@@ -414,9 +415,10 @@ TEST_CASE("face cuts: the flat store gives back every face's cut, also after fac
   {
     again.push_back(f);
     lists[f] = random_list();
+    table.replace(f, lists[f]);
   }
-  in_order.cut(lists, again.size(), [&again](std::size_t k) { return again[k]; }, false);
-  in_chunks.cut(lists, again.size(), [&again](std::size_t k) { return again[k]; }, true);
+  in_order.cut(table, again.size(), [&again](std::size_t k) { return again[k]; }, false);
+  in_chunks.cut(table, again.size(), [&again](std::size_t k) { return again[k]; }, true);
   CHECK(all_same(in_order) == 0);
   CHECK(all_same(in_chunks) == 0);
 }

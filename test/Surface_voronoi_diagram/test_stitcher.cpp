@@ -562,7 +562,8 @@ TEST_CASE("cell check: on the cuts and on the partition, the oracle's broken cel
     // the cuts, where they decide (no exact tie, no broken cell outside its site's location)
     // and stitching welded and dropped nothing
     SVI::Cell_connectivity on_cuts(located, no_breakline_sites);
-    const SVI::Cut_pieces<St_mesh, decltype(blocked)> cut_pieces(r.mesh, r.candidates, r.cuts, blocked);
+    const SVI::Candidate_table table{ SVI::Candidate_lists(r.candidates) };
+    const SVI::Cut_pieces<St_mesh, decltype(blocked)> cut_pieces(r.mesh, table, r.cuts, blocked);
     if(cut_pieces.has_tie(nullptr) || !on_cuts.check(cut_pieces, nullptr, trial % 4 == 0)) continue;
     if(r.part.welded_vertices != 0 || r.part.dropped_pieces != 0) continue;
     ++decided;
@@ -612,7 +613,7 @@ void folded_grid_sites(double amplitude, std::size_t number_of_sites, std::mt199
 }
 
 // as the diagram cuts them: a face with one candidate whole, without a piece
-void cut_listed_faces(const SVI::Candidate_lists& candidates, const std::vector<std::size_t>& faces, SVI::Face_cuts& cuts)
+void cut_listed_faces(const SVI::Candidate_table& candidates, const std::vector<std::size_t>& faces, SVI::Face_cuts& cuts)
 {
   cuts.cut(candidates, faces.size(), [&faces](std::size_t k) { return faces[k]; }, false);
 }
@@ -623,7 +624,7 @@ typedef SVI::Cut_pieces<St_mesh, bool (*)(std::size_t)> Folded_grid_cut_pieces;
 
 // The connectivity check on the cuts of every site (`which` null) or of the sites `which`
 // marks; false where the cuts do not decide.
-bool check_folded_grid_cuts(const St_run& r, const SVI::Candidate_lists& candidates, SVI::Cell_connectivity& cells,
+bool check_folded_grid_cuts(const St_run& r, const SVI::Candidate_table& candidates, SVI::Cell_connectivity& cells,
                             const std::vector<std::uint8_t>* which = nullptr)
 {
   const Folded_grid_cut_pieces pieces(r.mesh, candidates, r.cuts, &folded_grid_blocked_edge);
@@ -641,6 +642,7 @@ struct Folded_grid_propagation
   std::vector<std::pair<std::size_t, std::size_t> > breakline_site_faces;   // none: no site on the fold
   Folded_grid_fields fields{ nullptr };
   std::unique_ptr<SVI::Propagation<St_mesh, Folded_grid_fields, Blocked> > propagation;
+  SVI::Candidate_table table;   // the propagation's candidates, packed as the diagram packs them
 
   /// `faces_per_block`: if not 0, the first propagation runs in blocks of that many faces
   Folded_grid_propagation(double amplitude, std::size_t number_of_sites, std::mt19937& rng, std::size_t faces_per_block = 0)
@@ -655,7 +657,8 @@ struct Folded_grid_propagation
     std::vector<std::size_t> all_faces(r.mesh.number_of_faces());
     std::iota(all_faces.begin(), all_faces.end(), std::size_t(0));
     r.cuts.reset(all_faces.size());
-    cut_listed_faces(propagation->candidates, all_faces, r.cuts);
+    table = SVI::Candidate_table(std::move(propagation->candidates));
+    cut_listed_faces(table, all_faces, r.cuts);
   }
   Folded_grid_propagation(const Folded_grid_propagation&) = delete;
   Folded_grid_propagation& operator=(const Folded_grid_propagation&) = delete;
@@ -686,8 +689,8 @@ TEST_CASE("cell check: the first round, from the propagation's links, finds what
       in_blocks += (propagation.statistics.blocks > 1 && propagation.statistics.rounds > 1);
 
       SVI::Cell_connectivity full(located, grid.breakline_site_faces), quick(located, grid.breakline_site_faces);
-      if(!check_folded_grid_cuts(r, propagation.candidates, full)) continue;   // an exact tie
-      const Folded_grid_cut_pieces pieces(r.mesh, propagation.candidates, r.cuts, &folded_grid_blocked_edge);
+      if(!check_folded_grid_cuts(r, grid.table, full)) continue;   // an exact tie
+      const Folded_grid_cut_pieces pieces(r.mesh, grid.table, r.cuts, &folded_grid_blocked_edge);
       for(std::size_t i = 0; i < located.size(); ++i) quick.regions_of_site[i] = (pieces.piece_of(located[i].face, i) != SVI::no_site);
       std::vector<std::uint8_t> suspect(located.size(), 0);
       REQUIRE(pieces.find_suspects(suspect, trial % 2 == 0));
@@ -727,7 +730,7 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
     SVI::Cell_connectivity local(located, grid.breakline_site_faces);
     SVI::Banned_fields banned(r.mesh.number_of_faces());
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
-    if(!check_folded_grid_cuts(r, propagation.candidates, local)) continue;
+    if(!check_folded_grid_cuts(r, grid.table, local)) continue;
     for(int round = 1; round <= 6 && local.broken > 0; ++round)
     {
       INFO("round " << round);
@@ -738,17 +741,17 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
         if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
       }
       std::vector<std::uint32_t> sites_before;
-      propagation.repropagate(dirty, is_banned, touched, &sites_before);
-      cut_listed_faces(propagation.candidates, touched, r.cuts);
+      propagation.repropagate(grid.table, dirty, is_banned, touched, &sites_before);
+      cut_listed_faces(grid.table, touched, r.cuts);
       std::vector<std::uint8_t> affected(located.size(), 0);
       for(std::uint32_t s : sites_before) affected[s] = 1;
       for(std::size_t f : touched)
-        for(const SVI::Candidate& x : propagation.candidates[f]) affected[x.site] = 1;
+        for(const SVI::Candidate& x : grid.table[f]) affected[x.site] = 1;
       partial += (std::count(affected.begin(), affected.end(), 1) < std::ptrdiff_t(located.size()));
 
       SVI::Cell_connectivity full(located, grid.breakline_site_faces);
-      if(!check_folded_grid_cuts(r, propagation.candidates, full)) break;
-      if(!check_folded_grid_cuts(r, propagation.candidates, local, &affected)) break;
+      if(!check_folded_grid_cuts(r, grid.table, full)) break;
+      if(!check_folded_grid_cuts(r, grid.table, local, &affected)) break;
       ++rounds_compared;
       with_broken += (full.broken > 0);
       CHECK(local.broken == full.broken);
@@ -763,9 +766,9 @@ TEST_CASE("cell check: a later round, on the sites the repair changed, finds wha
   CHECK(partial >= 40);
 }
 
-// The diagram frees the propagation's working state (links, offers) before stitching, and a
-// repair after stitching builds it again from the candidates: the repair must then admit
-// exactly the fields it admits with the state kept, round after round, on the folded grids.
+// The diagram frees the propagation's faces' links after the first propagation, and a repair
+// makes those of the faces it reaches: it must admit exactly the fields it admits with the
+// links kept, round after round, on the folded grids.
 TEST_CASE("propagation: a repair after the working state was freed admits what the kept state admits", "[stitcher][repair]")
 {
   int rounds_compared = 0, rounds_admitting = 0;
@@ -779,7 +782,7 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
     SVI::Cell_connectivity cells(kept.located, kept.breakline_site_faces);
     SVI::Banned_fields banned(r.mesh.number_of_faces());
     auto is_banned = [&](std::size_t site, std::size_t f) { return banned.contains(site, f); };
-    if(!check_folded_grid_cuts(r, kept.propagation->candidates, cells)) continue;
+    if(!check_folded_grid_cuts(r, kept.table, cells)) continue;
     for(int round = 1; round <= 6 && cells.broken > 0; ++round)
     {
       INFO("round " << round);
@@ -790,16 +793,15 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
         if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
       }
       const std::size_t admitted_before = kept.propagation->statistics.admitted;
-      kept.propagation->repropagate(dirty, is_banned, touched_kept);
+      kept.propagation->repropagate(kept.table, dirty, is_banned, touched_kept);
       freed.propagation->release_working_state();
-      freed.propagation->repropagate(dirty, is_banned, touched_freed);
+      freed.propagation->repropagate(freed.table, dirty, is_banned, touched_freed);
       ++rounds_compared;
       CHECK(touched_freed == touched_kept);
       bool same = true;
       for(std::size_t f = 0; f < r.mesh.number_of_faces(); ++f)
       {
-        const SVI::Candidate_list& a = kept.propagation->candidates[f];
-        const SVI::Candidate_list& b = freed.propagation->candidates[f];
+        const SVI::Candidate_range a = kept.table[f], b = freed.table[f];
         same = same && a.size() == b.size();
         for(std::size_t j = 0; same && j < a.size(); ++j)
           same = a[j].site == b[j].site && a[j].from_edge == b[j].from_edge && a[j].value == b[j].value;
@@ -807,8 +809,8 @@ TEST_CASE("propagation: a repair after the working state was freed admits what t
       CHECK(same);
       CHECK(freed.propagation->statistics.admitted == kept.propagation->statistics.admitted);
       rounds_admitting += (kept.propagation->statistics.admitted > admitted_before);
-      cut_listed_faces(kept.propagation->candidates, touched_kept, r.cuts);
-      if(!check_folded_grid_cuts(r, kept.propagation->candidates, cells)) break;
+      cut_listed_faces(kept.table, touched_kept, r.cuts);
+      if(!check_folded_grid_cuts(r, kept.table, cells)) break;
     }
   }
   // the repairs must run, and admit fields again (the offers rebuilt decide those)
@@ -833,7 +835,7 @@ TEST_CASE("stitcher: partition vertices are 40 bytes, a piece's site index keeps
   CHECK(p.site != SVI::no_site);
 }
 
-TEST_CASE("stitcher: the packed candidate table reads back every list, and unpacks to the same lists", "[stitcher]")
+TEST_CASE("stitcher: the packed candidate table reads back every list, also after lists are replaced", "[stitcher]")
 {
   std::mt19937 rng(5);
   for(bool parallel : { false, true })
@@ -869,13 +871,27 @@ TEST_CASE("stitcher: the packed candidate table reads back every list, and unpac
       total += l.size();
     }
     CHECK(table.number_of_candidates() == total);
-    const SVI::Candidate_lists back = table.to_lists();
-    REQUIRE(back.size() == original.size());
-    for(std::size_t f = 0; f < original.size(); ++f)
+    // lists replaced, longer (at the end), shorter (in place) or emptied, until the table packs
+    // itself again: every face reads its last list
+    SVI::Candidate_table replaced(table);
+    SVI::Candidate_lists want = original;
+    for(int k = 0; k < 30000; ++k)
     {
-      REQUIRE(back[f].size() == original[f].size());
-      for(std::size_t k = 0; k < back[f].size(); ++k) CHECK(same(back[f][k], original[f][k]));
+      const std::size_t f = rng() % want.size();
+      SVI::Candidate_list list;
+      for(std::size_t j = 0, n = std::size_t(rng() % 7); j < n; ++j)
+        list.push_back(SVI::Candidate(std::uint32_t(rng() % 1000), {{ double(k), double(f), double(j) }}));
+      replaced.replace(f, list);
+      want[f] = list;
     }
+    std::size_t replaced_total = 0;
+    for(std::size_t f = 0; f < want.size(); ++f)
+    {
+      REQUIRE(replaced[f].size() == want[f].size());
+      for(std::size_t k = 0; k < want[f].size(); ++k) CHECK(same(replaced[f][k], want[f][k]));
+      replaced_total += want[f].size();
+    }
+    CHECK(replaced.number_of_candidates() == replaced_total);
     // copies hold the same candidates, apart from the original
     SVI::Candidate_table assigned;
     assigned = table;

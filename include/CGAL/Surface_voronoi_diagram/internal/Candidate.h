@@ -19,6 +19,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <boost/container/small_vector.hpp>
+#include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
 #include <array>
@@ -54,6 +55,8 @@ struct Candidate
 typedef boost::container::small_vector<Candidate, 3> Candidate_list;
 /// One list per face.
 typedef std::vector<Candidate_list> Candidate_lists;
+/// The candidates of one face as the stages after the propagation read them (`Candidate_table`).
+typedef boost::iterator_range<const Candidate*> Candidate_range;
 
 /// (value, site) compared lexicographically: ties go to the lower site index everywhere,
 /// which is the symbolic perturbation that makes both sides of every edge agree.

@@ -9,11 +9,11 @@
 //
 // Author(s) : The Surface_voronoi_diagram authors
 //
-// The faces' candidate lists once they no longer change, in one array. The propagation grows
-// a list per face (`Candidate_lists`, room for three candidates inline: 120 bytes a face);
+// The faces' candidate lists once the first propagation is done, in one array. The propagation
+// grows a list per face (`Candidate_lists`, room for three candidates inline: 120 bytes a face);
 // on large meshes most faces end with one candidate, so the final lists take far less packed
-// one after another (32 bytes a candidate and 4 a face). Stitching and everything after it read them
-// here; a repair after stitching unpacks them again (`to_lists()`).
+// one after another (32 bytes a candidate and 8 a face). The stages after the propagation read
+// them here; a repair or an update replaces the lists of the faces it changed (`replace()`).
 
 #ifndef CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H
 #define CGAL_SURFACE_VORONOI_DIAGRAM_INTERNAL_CANDIDATE_TABLE_H
@@ -24,8 +24,6 @@
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <CGAL/assertions.h>
-
-#include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -39,7 +37,7 @@ class Candidate_table
 {
 public:
   /// the candidates of one face
-  typedef boost::iterator_range<const Candidate*> List;
+  typedef Candidate_range List;
 
   Candidate_table() = default;
 
@@ -55,8 +53,7 @@ public:
     });
     const std::size_t total = chunk_first.back();
     CGAL_precondition_msg(total < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
-    m_first.resize(nf + 1);
-    m_first[nf] = static_cast<std::uint32_t>(total);
+    m_faces.resize(nf);
     m_items.resize(total);
     // The lists on the heap are freed afterwards, on one thread: freed by the threads of the
     // copy, most of them allocated by another thread, they would queue on the allocator's
@@ -65,7 +62,7 @@ public:
       std::size_t first = chunk_first[c];
       for(std::size_t f = begin; f < end; ++f)
       {
-        m_first[f] = static_cast<std::uint32_t>(first);
+        m_faces[f] = Range{ static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(lists[f].size()) };
         std::copy(lists[f].begin(), lists[f].end(), m_items.data() + first);
         first += lists[f].size();
       }
@@ -74,33 +71,69 @@ public:
   }
 
   /// the number of faces
-  std::size_t size() const { return m_first.empty() ? 0 : m_first.size() - 1; }
+  std::size_t size() const { return m_faces.size(); }
   /// the number of candidates of all faces
-  std::size_t number_of_candidates() const { return m_items.size(); }
+  std::size_t number_of_candidates() const { return m_items.size() - m_unused; }
 
   List operator[](std::size_t f) const
   {
     CGAL_assertion(f < size());
-    return List(m_items.data() + m_first[f], m_items.data() + m_first[f + 1]);
+    const Candidate* first = m_items.data() + m_faces[f].first;
+    return List(first, first + m_faces[f].size);
   }
 
-  /// the lists again, for a propagation to grow them
-  Candidate_lists to_lists() const
+  /// Face f's candidates become `list`'s: in place if they fit, else at the end, the old ones
+  /// left unused until those outnumber the others and the table is packed again.
+  void replace(std::size_t f, const Candidate_list& list)
   {
-    Candidate_lists lists(size(), Candidate_list());
-    for(std::size_t f = 0; f < lists.size(); ++f) lists[f].assign((*this)[f].begin(), (*this)[f].end());
-    return lists;
+    if(list.size() > m_faces[f].size)
+    {
+      if(m_unused > number_of_candidates()) pack();
+      CGAL_precondition_msg(m_items.size() + list.size() < std::size_t(std::uint32_t(-1)), "too many candidates for 32-bit offsets");
+      // grown by an eighth: a doubled array would stay twice the size of what a diagram keeps
+      if(m_items.size() + list.size() > m_items.capacity()) m_items.reserve(m_items.size() + list.size() + m_items.size() / 8);
+      m_unused += m_faces[f].size;
+      m_faces[f].first = static_cast<std::uint32_t>(m_items.size());
+      m_items.insert(m_items.end(), list.begin(), list.end());
+    }
+    else
+    {
+      std::copy(list.begin(), list.end(), m_items.begin() + m_faces[f].first);
+      m_unused += m_faces[f].size - list.size();
+    }
+    m_faces[f].size = static_cast<std::uint32_t>(list.size());
   }
 
   void clear()
   {
-    std::vector<std::uint32_t>().swap(m_first);
+    std::vector<Range>().swap(m_faces);
     std::vector<Candidate>().swap(m_items);
+    m_unused = 0;
   }
 
 private:
-  std::vector<std::uint32_t> m_first;   // face f's candidates: m_items[m_first[f]] .. m_items[m_first[f + 1]]
+  struct Range
+  {
+    std::uint32_t first, size;   // face f's candidates: m_items[first] .. m_items[first + size]
+  };
+
+  // the lists one after another again, in face order
+  void pack()
+  {
+    std::vector<Candidate> items;
+    items.reserve(number_of_candidates() + number_of_candidates() / 8);
+    for(Range& r : m_faces)
+    {
+      items.insert(items.end(), m_items.begin() + r.first, m_items.begin() + r.first + r.size);
+      r.first = static_cast<std::uint32_t>(items.size() - r.size);
+    }
+    m_items.swap(items);
+    m_unused = 0;
+  }
+
+  std::vector<Range> m_faces;
   std::vector<Candidate> m_items;
+  std::size_t m_unused = 0;   // the candidates replace() left behind
 };
 
 /// The sites of each face's candidates, without their values: the diagram a Lloyd step

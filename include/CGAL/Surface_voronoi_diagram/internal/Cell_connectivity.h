@@ -26,7 +26,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Disjoint_sets.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -195,7 +195,7 @@ public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
   static constexpr bool has_area = false;
 
-  Cut_pieces(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts, const Blocked_edge& blocked_edge)
+  Cut_pieces(const Mesh& mesh, const Candidate_table& candidates, const Face_cuts& cuts, const Blocked_edge& blocked_edge)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_blocked_edge(blocked_edge)
   {}
 
@@ -208,7 +208,7 @@ public:
   {
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
     {
-      const Candidate_list& list = m_candidates[f];
+      const Candidate_range list = m_candidates[f];
       bool any = !which;
       for(std::size_t j = 0; j < list.size() && !any; ++j) any = ((*which)[list[j].site] != 0);
       if(!any || list.empty()) continue;   // most faces, for a few sites: their cuts are not read
@@ -225,7 +225,7 @@ public:
   std::size_t piece_of(std::size_t f, std::size_t site) const
   {
     const Face_cuts::Cut cut = m_cuts[f];
-    const Candidate_list& list = m_candidates[f];
+    const Candidate_range list = m_candidates[f];
     if(list.empty()) return no_site;
     if(cut.whole_face) return list[0].site == site ? f << 32 : no_site;
     for(std::size_t local = 0; local < cut.pieces.size(); ++local)
@@ -384,7 +384,7 @@ private:
     const std::size_t va = m_mesh.edge_vertices[e][0], vb = m_mesh.edge_vertices[e][1];
     if(v.kind == Symbolic_vertex::CORNER)
       return m_mesh.triangles[f][v.local] == va ? 0. : 1.;
-    const Candidate_list& list = m_candidates[f];
+    const Candidate_range list = m_candidates[f];
     const std::uint32_t s = list[owner].site, t = list[v.other].site;
     const double* lo = (s < t ? list[owner] : list[v.other]).value.data();
     const double* hi = (s < t ? list[v.other] : list[owner]).value.data();
@@ -393,7 +393,7 @@ private:
   }
 
   const Mesh& m_mesh;
-  const Candidate_lists& m_candidates;
+  const Candidate_table& m_candidates;
   const Face_cuts& m_cuts;
   Blocked_edge m_blocked_edge;
 };

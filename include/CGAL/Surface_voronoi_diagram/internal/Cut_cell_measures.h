@@ -19,7 +19,7 @@
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
 #include <CGAL/Surface_voronoi_diagram/internal/Bisector_points.h>
-#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Double_kernel.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cuts.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
@@ -63,7 +63,7 @@ class Cut_cell_measurer
 public:
   typedef Indexed_mesh<TriangleMesh> Mesh;
 
-  Cut_cell_measurer(const Mesh& mesh, const Candidate_lists& candidates, const Face_cuts& cuts,
+  Cut_cell_measurer(const Mesh& mesh, const Candidate_table& candidates, const Face_cuts& cuts,
                     const std::vector<Site>& sites, const Embedding_values* embedding,
                     const std::vector<double>* density = nullptr)
     : m_mesh(mesh), m_candidates(candidates), m_cuts(cuts), m_sites(sites), m_embedding(embedding), m_density(density)
@@ -80,7 +80,7 @@ public:
     Polygon polygon;
     for(std::size_t f = 0; f < m_mesh.number_of_faces(); ++f)
     {
-      const Candidate_list& list = m_candidates[f];
+      const Candidate_range list = m_candidates[f];
       if(list.empty())
       {
         out.unreached_area += m_mesh.face_areas[f];
@@ -124,7 +124,7 @@ private:
 
   void place(std::size_t f, std::uint32_t owner, const Symbolic_vertex& v, Polygon_vertex& out) const
   {
-    const Candidate_list& list = m_candidates[f];
+    const Candidate_range list = m_candidates[f];
     Barycentric& b = out.b;
     b = {{ 0., 0., 0. }};
     if(v.kind == Symbolic_vertex::CORNER)
@@ -272,7 +272,7 @@ private:
   }
 
   const Mesh& m_mesh;
-  const Candidate_lists& m_candidates;
+  const Candidate_table& m_candidates;
   const Face_cuts& m_cuts;
   const std::vector<Site>& m_sites;
   const Embedding_values* m_embedding;

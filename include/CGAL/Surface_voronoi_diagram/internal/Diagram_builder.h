@@ -74,7 +74,7 @@ public:
     propagate(propagation);
     if(!progress(0.4)) return false;
     m_cuts.reset(m_mesh.number_of_faces());
-    cut_faces(propagation.candidates, nullptr);
+    cut_faces(nullptr);
     m_timer.stop("cutting");
     if(!progress(0.7)) return false;
 
@@ -105,26 +105,24 @@ public:
     start_statistics();
     const std::vector<std::size_t> faces = site_faces();
     Field_propagation propagation(m_mesh, m_fields, faces, d.breakline_site_faces, m_blocked, m_settings.parallel);
-    Candidate_lists& lists = propagation.candidates;
-    lists = d.candidates.to_lists();
     m_cuts = std::move(d.cuts);
     m_banned = std::move(d.banned);
     m_recut.assign(nf, 0);
     if(d.recut_faces > nf)   // the old pieces of faces cut again as many as the live ones: all cut again
     {
       m_cuts.reset(nf);
-      cut_faces(lists, nullptr);
+      cut_faces(nullptr);
       d.recut_faces = 0;
     }
-    // the faces that lose a changed field or hold a changed site lose their bans too
+    // the faces that hold a changed field or a changed site lose their bans too
     std::vector<std::size_t> dirty;
     for(std::size_t f = 0; f < nf; ++f)
-    {
-      const std::size_t before = lists[f].size();
-      lists[f].erase(std::remove_if(lists[f].begin(), lists[f].end(), [&](const Candidate& x) { return changed[x.site] != 0; }),
-                     lists[f].end());
-      if(lists[f].size() != before) dirty.push_back(f);
-    }
+      for(const Candidate& x : d.candidates[f])
+        if(changed[x.site])
+        {
+          dirty.push_back(f);
+          break;
+        }
     propagation.for_each_start([&](std::size_t site, std::size_t f) {
       if(changed[site]) dirty.push_back(f);
     });
@@ -132,18 +130,18 @@ public:
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
     m_banned.erase_if([&](std::size_t site, std::size_t f) { return changed[site] || std::binary_search(dirty.begin(), dirty.end(), f); });
     std::vector<std::uint32_t> sites_before;
-    propagation.repropagate(dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); }, m_touched,
-                            &sites_before);
+    propagation.repropagate(d.candidates, dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); },
+                            m_touched, &sites_before, &changed);
     m_fields.propagation_done();
     d.statistics.propagation_events = propagation.statistics.events;
     m_timer.stop("propagation");
-    cut_faces(lists, &m_touched);
+    cut_faces(&m_touched);
     d.recut_faces += m_touched.size();
     // the cells with a piece in a face cut again, before or after; the others are as they were
     m_affected = changed;
     for(std::uint32_t s : sites_before) m_affected[s] = 1;
     for(std::size_t f : m_touched)
-      for(const Candidate& x : lists[f]) m_affected[x.site] = 1;
+      for(const Candidate& x : d.candidates[f]) m_affected[x.site] = 1;
     return repair_and_stitch(propagation, cells, 1);
   }
 
@@ -168,12 +166,12 @@ private:
     bool on_partition = !repairs();
     for(std::size_t round = first_round;; ++round)
     {
-      const bool decided = !on_partition && check_cuts(cells, propagation.candidates, round);
+      const bool decided = !on_partition && check_cuts(cells, round);
       if(!decided || cells.broken == 0 || round >= m_settings.max_repair_rounds)   // the partition decides, or is the result
       {
         if constexpr(ForRelaxation)
-          if(decided && cells.broken == 0 && m_settings.cells_only) return measure_on_cuts(propagation.candidates, cells);
-        stitch_partition(propagation);
+          if(decided && cells.broken == 0 && m_settings.cells_only) return measure_on_cuts(cells);
+        stitch_partition();
         const Partition& partition = m_data.partition;
         on_partition = !decided || cells.broken != 0 || partition.welded_vertices != 0 || partition.dropped_pieces != 0;
         if(on_partition) cells.check(Stitched_pieces<TriangleMesh, Blocked>(m_mesh, partition, m_blocked), nullptr, m_settings.parallel);
@@ -232,6 +230,9 @@ private:
     else if(!start_from_previous(propagation))
       propagation.run();
     m_fields.propagation_done();
+    propagation.release_working_state();   // a repair's propagation makes the links it needs
+    // packed for the stages after it; a repair replaces the lists it changes
+    m_data.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
     Diagram_statistics& s = m_data.statistics;
     s.propagation_events = propagation.statistics.events;
     s.admitted_fields = propagation.statistics.admitted;
@@ -244,9 +245,9 @@ private:
   // sites the propagation's links suspect, a later one the sites the repair changed (every
   // other site was whole: a broken cell's orphans were banned, which touched their faces).
   // False where the cuts cannot decide.
-  bool check_cuts(Cell_connectivity& cells, const Candidate_lists& candidates, std::size_t round)
+  bool check_cuts(Cell_connectivity& cells, std::size_t round)
   {
-    const Cut_pieces<TriangleMesh, Blocked> pieces(m_mesh, candidates, m_cuts, m_blocked);
+    const Cut_pieces<TriangleMesh, Blocked> pieces(m_mesh, m_data.candidates, m_cuts, m_blocked);
     if(pieces.has_tie(round == 0 ? nullptr : &m_touched)) return false;
     if(round > 0) return cells.check(pieces, &m_affected, m_settings.parallel);
     // the sites no link suspects are whole, or empty
@@ -257,12 +258,9 @@ private:
     return cells.check(pieces, few_breaks ? &m_affected : nullptr, m_settings.parallel);
   }
 
-  void stitch_partition(Field_propagation& propagation)
+  void stitch_partition()
   {
     m_timer.stop("repair");
-    propagation.release_working_state();   // a repair after stitching builds it again
-    // packed for stitching, where the memory peaks; a repair after it unpacks them
-    m_data.candidates = Candidate_table(std::move(propagation.candidates), m_settings.parallel);
     // what the candidates alone decide (the vertices' owners) beside the stitching's naming
     // of the vertices, which runs on one thread: the two write to different arrays
     // an update's partition: the old one, stitched again around the faces cut again
@@ -281,11 +279,6 @@ private:
   // are those it can have changed.
   void repair(Field_propagation& propagation, const std::vector<std::pair<std::size_t, std::size_t> >& orphans, std::size_t round)
   {
-    if(propagation.candidates.empty())   // packed for stitching
-    {
-      propagation.candidates = m_data.candidates.to_lists();
-      m_data.candidates.clear();
-    }
     std::vector<std::size_t> dirty;
     for(const std::pair<std::size_t, std::size_t>& x : orphans)
     {
@@ -293,26 +286,25 @@ private:
       if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
     }
     std::vector<std::uint32_t> sites_before;
-    propagation.repropagate(dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); }, m_touched,
-                            &sites_before);
-    cut_faces(propagation.candidates, &m_touched);
+    propagation.repropagate(m_data.candidates, dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); },
+                            m_touched, &sites_before);
+    cut_faces(&m_touched);
     m_affected.assign(m_data.sites.size(), 0);
     for(std::uint32_t s : sites_before) m_affected[s] = 1;
     for(std::size_t f : m_touched)
-      for(const Candidate& x : propagation.candidates[f]) m_affected[x.site] = 1;
+      for(const Candidate& x : m_data.candidates[f]) m_affected[x.site] = 1;
     m_data.statistics.repair_rounds = round + 1;
     m_data.statistics.banned_fields = m_banned.size();
   }
 
   // Lloyd's diagrams: the cuts have decided that every cell is whole, and the measures of the
   // cells are taken on them, without a partition
-  bool measure_on_cuts(Candidate_lists& candidates, const Cell_connectivity& cells)
+  bool measure_on_cuts(const Cell_connectivity& cells)
   {
     m_timer.stop("repair");
     Diagram_data<TriangleMesh>& d = m_data;
-    d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, candidates, m_cuts, d.sites, embedding_of(m_fields),
+    d.measures = Cut_cell_measurer<TriangleMesh>(m_mesh, d.candidates, m_cuts, d.sites, embedding_of(m_fields),
                                                  d.centroid_density.get()).run();
-    d.candidates = Candidate_table(std::move(candidates), m_settings.parallel);
     summarize_candidates();
     summarize(cells);
     m_timer.stop("cutting");
@@ -340,8 +332,9 @@ private:
     return std::is_same<Fields, Embedding_values>::value;
   }
 
-  void cut_faces(const Candidate_lists& candidates, const std::vector<std::size_t>* which)
+  void cut_faces(const std::vector<std::size_t>* which)
   {
+    const Candidate_table& candidates = m_data.candidates;
     if(!which) return m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
     for(std::size_t f : *which)
       if(!m_recut.empty()) m_recut[f] = 1;

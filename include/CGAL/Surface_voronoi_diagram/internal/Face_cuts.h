@@ -23,7 +23,7 @@
 
 #include <CGAL/license/Surface_voronoi_diagram.h>
 
-#include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_cutter.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
@@ -116,7 +116,7 @@ public:
   /// arrays unused (repair rounds cut few faces again); the chunks depend on `faces` alone,
   /// not on the threads.
   template <class FaceOfIndex>
-  void cut(const Candidate_lists& candidates, std::size_t count, const FaceOfIndex& face, bool parallel)
+  void cut(const Candidate_table& candidates, std::size_t count, const FaceOfIndex& face, bool parallel)
   {
     const std::size_t chunk_size = 8192;
     const std::size_t first_chunk = m_chunks.size(), chunks = number_of_chunks(count, chunk_size);
@@ -179,9 +179,9 @@ private:
     }
   };
 
-  static void cut_face(const Candidate_lists& candidates, std::size_t f, Buffer& buffer)
+  static void cut_face(const Candidate_table& candidates, std::size_t f, Buffer& buffer)
   {
-    const Candidate_list& list = candidates[f];
+    const Candidate_range list = candidates[f];
     Face_cut& c = buffer.scratch;
     if(list.size() > 1)
       Face_cutter(list).cut(c);

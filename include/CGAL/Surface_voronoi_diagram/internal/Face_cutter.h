@@ -83,7 +83,8 @@ struct Face_cut
 class Face_cutter
 {
 public:
-  explicit Face_cutter(const Candidate_list& candidates) : m_candidates(candidates) {}
+  explicit Face_cutter(Candidate_range candidates) : m_candidates(candidates) {}
+  explicit Face_cutter(const Candidate_list& c) : m_candidates(c.data(), c.data() + c.size()) {}
 
   /// sign of h_il = D_i - D_l at vertex `v` of the piece of candidate i
   int sign_at(const Symbolic_vertex& v, std::uint32_t i, std::uint32_t l) const
@@ -233,7 +234,7 @@ private:
     return true;
   }
 
-  const Candidate_list& m_candidates;
+  Candidate_range m_candidates;
   // scratch of clip(): a piece starts with 3 vertices and gains at most one per clip
   mutable boost::container::small_vector<int, 16> m_signs;
   mutable boost::container::small_vector<Symbolic_vertex, 16> m_out_vertices;

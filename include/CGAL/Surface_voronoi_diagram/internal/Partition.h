@@ -23,6 +23,7 @@
 
 #include <boost/container/small_vector.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -97,6 +98,41 @@ struct Partition
     t = (v.kind == AT_CORNER) ? (v.element == mesh.edge_vertices[e][0] ? 0. : 1.) : v.t;
     if(v.kind == AT_CORNER) return v.element == mesh.edge_vertices[e][0] || v.element == mesh.edge_vertices[e][1];
     return v.kind == ON_EDGE && v.element == e;
+  }
+
+  /// Replaces the pieces of the faces `faces` (ascending) by `fresh` (grouped by face in the
+  /// same order), moving the pieces between them in place, each run of them by the change in
+  /// the number of pieces before it.
+  void replace_pieces(const std::vector<std::size_t>& faces, std::vector<Piece>& fresh)
+  {
+    const std::size_t n = faces.size(), old_size = pieces.size();
+    std::vector<std::size_t> first(n + 1, 0);   // of each face's pieces in `fresh`
+    std::vector<std::ptrdiff_t> shift(n);       // of the run of pieces after faces[i]
+    std::ptrdiff_t s = 0;
+    for(std::size_t i = 0, r = 0; i < n; ++i)
+    {
+      first[i] = r;
+      while(r < fresh.size() && fresh[r].face == faces[i]) ++r;
+      first[i + 1] = r;
+      s += std::ptrdiff_t(r - first[i]) - std::ptrdiff_t(face_begin[faces[i] + 1] - face_begin[faces[i]]);
+      shift[i] = s;
+    }
+    CGAL_precondition(first[n] == fresh.size() && std::ptrdiff_t(old_size) + s < std::ptrdiff_t(0xffffffffu));
+    auto run = [&](std::size_t i) {   // the pieces after faces[i], up to the next one
+      return std::make_pair(pieces.begin() + face_begin[faces[i] + 1], pieces.begin() + (i + 1 < n ? face_begin[faces[i + 1]] : old_size));
+    };
+    if(s > 0) pieces.resize(old_size + std::size_t(s));
+    // runs moving down in order, runs moving up in reverse: none overwrites one still to move
+    for(std::size_t i = 0; i < n; ++i)
+      if(shift[i] < 0) std::move(run(i).first, run(i).second, run(i).first + shift[i]);
+    for(std::size_t i = n; i-- > 0;)
+      if(shift[i] > 0) std::move_backward(run(i).first, run(i).second, run(i).second + shift[i]);
+    for(std::size_t i = 0; i < n; ++i)
+      std::move(fresh.begin() + first[i], fresh.begin() + first[i + 1], pieces.begin() + face_begin[faces[i]] + (i ? shift[i - 1] : 0));
+    if(s < 0) pieces.resize(std::size_t(std::ptrdiff_t(old_size) + s));
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t f = faces[i] + 1; f <= (i + 1 < n ? faces[i + 1] : face_begin.size() - 1); ++f)
+        face_begin[f] = std::uint32_t(std::ptrdiff_t(face_begin[f]) + shift[i]);
   }
 
   /// face_begin again after pieces were removed (faces left without a piece get an empty range)

@@ -30,11 +30,13 @@
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Candidate_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Face_blocks.h>
+#include <CGAL/Surface_voronoi_diagram/internal/Flat_hash_table.h>
 #include <CGAL/Surface_voronoi_diagram/internal/Indexed_mesh.h>
 #include <CGAL/Surface_voronoi_diagram/internal/parallel.h>
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <cstdint>
 #include <numeric>
 #include <type_traits>
@@ -89,9 +91,7 @@ public:
               bool parallel = false)
     : m_mesh(mesh), m_fields(fields), m_site_faces(site_faces), m_breakline_site_faces(breakline_site_faces), m_blocked(blocked),
       m_parallel(parallel)
-  {
-    link_faces();
-  }
+  {}
 
   /// Blocks of other sizes than the defaults (before `run()`): smaller ones for values that
   /// cost far more than a field's crossing (lazy metrics), and in tests, small meshes in blocks.
@@ -117,6 +117,7 @@ public:
   /// the first propagation, from every site
   void run()
   {
+    link_faces();
     candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     const std::size_t blocks = number_of_blocks();
     if(blocks > 1)
@@ -125,7 +126,7 @@ public:
     {
       for_each_start([this](std::uint32_t site, std::size_t f) { offer(m_front, site, f, Candidate::at_site); });
       auto no_ban = [](std::size_t, std::size_t) { return false; };
-      drain(m_front, no_ban, nullptr);
+      drain(m_front, no_ban, false);
     }
     parallel_for_each_index(candidates.size(), m_parallel, [this](std::size_t f) { clean_candidate_list(candidates[f]); });
   }
@@ -148,6 +149,7 @@ public:
   {
     const std::size_t nf = m_mesh.number_of_faces();
     CGAL_precondition(previous.number_of_faces() == nf);
+    link_faces();
     candidates.assign(m_mesh.number_of_faces(), Candidate_list());
     for(std::size_t f = 0; f < nf; ++f)
     {
@@ -224,52 +226,61 @@ public:
     for(const Candidate_list& list : candidates) statistics.admitted += list.size();
   }
 
-  /// Frees what a repair's propagation reads besides the candidates (the faces' links: tens
-  /// of bytes per face), for the stages that do not need it; `repropagate()` builds it again.
+  /// Frees what the first propagation read besides the candidates (the faces' links: tens of
+  /// bytes per face), for the stages that do not need it; `repropagate()` makes those of the
+  /// faces it reaches.
   void release_working_state() { std::vector<Face_link>().swap(m_links); }
 
-  /// After the repair banned (site, face) pairs: the banned candidates are removed from the
-  /// `dirty` faces, whose lists are then refilled from their neighbours' candidates, and the
-  /// propagation goes on from there. `touched` receives every face whose list changed, and
-  /// `sites_before`, if given, the sites those lists held before (with repetitions).
+  /// After the repair banned (site, face) pairs, or an update moved sites, on the candidates
+  /// of `table`: the banned candidates are removed from the `dirty` faces, whose lists are then
+  /// refilled from their neighbours' candidates, and the propagation goes on from there, on
+  /// copies of the lists of the faces it reaches (few: no pass over the mesh). `touched`
+  /// receives every face whose list changed, in order, its list replaced in `table`, and
+  /// `sites_before`, if given, the sites those lists held before (with repetitions). The sites
+  /// `leaving` marks, if given, leave the dirty faces too (an update's moved sites, whose
+  /// fields start again from their sites).
   template <class Banned>
-  void repropagate(const std::vector<std::size_t>& dirty, const Banned& banned, std::vector<std::size_t>& touched,
-                   std::vector<std::uint32_t>* sites_before = nullptr)
+  void repropagate(Candidate_table& table, const std::vector<std::size_t>& dirty, const Banned& banned,
+                   std::vector<std::size_t>& touched, std::vector<std::uint32_t>* sites_before = nullptr,
+                   const std::vector<std::uint8_t>* leaving = nullptr)
   {
-    if(m_links.size() != m_mesh.number_of_faces())   // released
-      link_faces();
-    std::vector<std::uint8_t> is_touched(m_mesh.number_of_faces(), 0);
+    m_table = &table;
+    m_reached.reset(16 * dirty.size());
     m_sites_before = sites_before;
     for(std::size_t f : dirty)
     {
-      Candidate_list& list = candidates[f];
-      if(!is_touched[f]) record_sites_before(f);
-      list.erase(std::remove_if(list.begin(), list.end(), [&](const Candidate& x) { return banned(x.site, f); }),
+      Candidate_list& list = this->list(f);
+      mark_touched(f);
+      list.erase(std::remove_if(list.begin(), list.end(),
+                                [&](const Candidate& x) { return (leaving && (*leaving)[x.site]) || banned(x.site, f); }),
                  list.end());
-      is_touched[f] = 1;
     }
     for(std::size_t f : dirty)
     {
+      const Face_link l = link(f);
       for(int k = 0; k < 3; ++k)
-      {
-        const std::uint32_t g = m_links[f].neighbor[k];
-        if(g == no_link) continue;
-        for(const Candidate& x : candidates[g])
-          if(!banned(x.site, f)) offer(m_front, x.site, f, static_cast<std::uint8_t>(k));
-      }
+        if(l.neighbor[k] != no_link)
+          for(const Candidate& x : list(l.neighbor[k]))   // a deque's lists stay in place
+            if(!banned(x.site, f)) offer(m_front, x.site, f, static_cast<std::uint8_t>(k));
     }
     for_each_start([&](std::uint32_t site, std::size_t f) {
-      if(is_touched[f] && !banned(site, f)) offer(m_front, site, f, Candidate::at_site);
+      const Reached* r = m_reached.find(static_cast<std::uint32_t>(f));
+      if(r && m_local[r->index].touched && !banned(site, f)) offer(m_front, site, f, Candidate::at_site);
     });
-    drain(m_front, banned, &is_touched);
+    drain(m_front, banned, true);
     m_sites_before = nullptr;
     touched.clear();
-    for(std::size_t f = 0; f < is_touched.size(); ++f)
-      if(is_touched[f])
+    for(Local_list& x : m_local)
+      if(x.touched)
       {
-        clean_candidate_list(candidates[f]);
-        touched.push_back(f);
+        clean_candidate_list(x.list);
+        table.replace(x.face, x.list);
+        touched.push_back(x.face);
       }
+    std::sort(touched.begin(), touched.end());
+    m_local.clear();
+    m_reached.reset(0);
+    m_table = nullptr;
   }
 
   /// Calls `start(site, face)` for each site and its face, in site order, then for the other
@@ -411,24 +422,46 @@ private:
 
   void link_faces()
   {
-    const std::size_t nf = m_mesh.number_of_faces();
-    m_links.resize(nf);
-    parallel_for_each_index(nf, m_parallel, [this](std::size_t f) {
-      for(int k = 0; k < 3; ++k)
-      {
-        Face_link& l = m_links[f];
-        const std::size_t g = m_mesh.neighbors[f][k];
-        l.neighbor[k] = no_link;
-        l.fresh_vertex[k] = 0;
-        l.shared_corners[k] = 0;
-        if(g == Mesh::none || m_blocked(f, k)) continue;
-        const int a = m_mesh.corner_of(g, m_mesh.triangles[f][k]), b = m_mesh.corner_of(g, m_mesh.triangles[f][(k + 1) % 3]);
-        CGAL_assertion(a >= 0 && a < 3 && b >= 0 && b < 3 && a != b);
-        l.neighbor[k] = static_cast<std::uint32_t>(g);
-        l.fresh_vertex[k] = static_cast<std::uint32_t>(m_mesh.triangles[g][3 - a - b]);
-        l.shared_corners[k] = static_cast<std::uint8_t>(a | (b << 2));
-      }
-    });
+    m_links.resize(m_mesh.number_of_faces());
+    parallel_for_each_index(m_links.size(), m_parallel, [this](std::size_t f) { m_links[f] = make_link(f); });
+  }
+
+  Face_link make_link(std::size_t f) const
+  {
+    Face_link l;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t g = m_mesh.neighbors[f][k];
+      l.neighbor[k] = no_link;
+      l.fresh_vertex[k] = 0;
+      l.shared_corners[k] = 0;
+      if(g == Mesh::none || m_blocked(f, k)) continue;
+      const int a = m_mesh.corner_of(g, m_mesh.triangles[f][k]), b = m_mesh.corner_of(g, m_mesh.triangles[f][(k + 1) % 3]);
+      CGAL_assertion(a >= 0 && a < 3 && b >= 0 && b < 3 && a != b);
+      l.neighbor[k] = static_cast<std::uint32_t>(g);
+      l.fresh_vertex[k] = static_cast<std::uint32_t>(m_mesh.triangles[g][3 - a - b]);
+      l.shared_corners[k] = static_cast<std::uint8_t>(a | (b << 2));
+    }
+    return l;
+  }
+
+  // a repropagate() without the whole mesh's links makes those of the faces it reaches
+  Face_link link(std::size_t f) const { return m_links.empty() ? make_link(f) : m_links[f]; }
+
+  // The list of face f: the propagation's, or in repropagate(), a copy of the table's made
+  // when the face is first reached (apart, so that the first propagation's stays inline).
+  Candidate_list& list(std::size_t f) { return m_table ? reached_list(f) : candidates[f]; }
+
+  Candidate_list& reached_list(std::size_t f)
+  {
+    const std::pair<Reached*, bool> r = m_reached.insert(static_cast<std::uint32_t>(f));
+    if(r.second)
+    {
+      r.first->index = static_cast<std::uint32_t>(m_local.size());
+      const Candidate_range c = (*m_table)[f];
+      m_local.push_back(Local_list{ Candidate_list(c.begin(), c.end()), f, false });
+    }
+    return m_local[r.first->index].list;
   }
 
   // The first propagation in `count` blocks (see the file's comment). Each block's faces are
@@ -446,7 +479,7 @@ private:
     auto no_ban = [](std::size_t, std::size_t) { return false; };
     for_each_chunk(count, 1, m_parallel, [&](std::size_t b, std::size_t, std::size_t) {
       for(const std::pair<std::uint32_t, std::size_t>& x : starts[b]) offer(fronts[b], x.first, x.second, Candidate::at_site);
-      drain(fronts[b], no_ban, nullptr);
+      drain(fronts[b], no_ban, false);
     });
     std::size_t rounds = 1;
     std::vector<std::vector<Crossing> > inbox(count);
@@ -475,7 +508,7 @@ private:
           queue_unless_dominated(front, x, c.face);
         }
         std::vector<Crossing>().swap(inbox[b]);
-        drain(front, no_ban, nullptr);
+        drain(front, no_ban, false);
       });
     }
     for(const Front& front : fronts) statistics.add(front.statistics);
@@ -488,16 +521,15 @@ private:
   // edge `from_edge` of f.
   void offer(Front& front, std::uint32_t site, std::size_t f, std::uint8_t from_edge)
   {
-    if(find_site(candidates[f], site)) return;
+    if(find_site(list(f), site)) return;
     Candidate x(site, field_values(site, f), from_edge);
     queue_unless_dominated(front, x, f);
   }
 
-  // Offers the field of the candidate `from` on face `from_face` across the face's local edge
-  // k (carried_across()). Into another block, the offer goes to the outbox.
-  void offer_across(Front& front, const Candidate& from, std::size_t from_face, int k)
+  // Offers the field of the candidate `from` across local edge k of its face, whose links are
+  // `l` (carried_across()). Into another block, the offer goes to the outbox.
+  void offer_across(Front& front, const Candidate& from, const Face_link& l, int k)
   {
-    const Face_link& l = m_links[from_face];
     const std::size_t f = l.neighbor[k];
     const int a = l.shared_corners[k] & 3, b = l.shared_corners[k] >> 2, fresh = 3 - a - b;
     if(!m_block_of.empty() && m_block_of[f] != front.block)
@@ -512,7 +544,7 @@ private:
       front.outbox.push_back(c);
       return;
     }
-    if(find_site(candidates[f], from.site)) return;
+    if(find_site(list(f), from.site)) return;
     queue_unless_dominated(front, carried_across(from, l, k), f);
   }
 
@@ -541,7 +573,7 @@ private:
   void queue_unless_dominated(Front& front, const Candidate& x, std::size_t f)
   {
     // lists only grow: a field dominated now stays dominated, so do not queue it
-    Candidate_list& list = candidates[f];
+    Candidate_list& list = this->list(f);
     if(dominated_in(list, x)) return;
     // past the inline room, the room doubles (boost's growth factor would reallocate at
     // every candidate of the usual three or four)
@@ -552,15 +584,19 @@ private:
     std::push_heap(front.queue.begin(), front.queue.end(), Later());
   }
 
-  void record_sites_before(std::size_t f)
+  // repropagate(): face f's list changes (its copy is written back to the table)
+  void mark_touched(std::size_t f)
   {
+    Local_list& x = m_local[m_reached.find(static_cast<std::uint32_t>(f))->index];
+    if(x.touched) return;
+    x.touched = true;
     if(m_sites_before)
-      for(const Candidate& x : candidates[f])
-        if(!is_waiting(x)) m_sites_before->push_back(x.site);
+      for(const Candidate& c : x.list)
+        if(!is_waiting(c)) m_sites_before->push_back(c.site);
   }
 
   template <class Banned>
-  void drain(Front& front, const Banned& banned, std::vector<std::uint8_t>* touched)
+  void drain(Front& front, const Banned& banned, bool mark)
   {
     auto& queue = front.queue;
     while(!queue.empty())
@@ -569,7 +605,7 @@ private:
       const Event e = queue.back();
       queue.pop_back();
       ++front.statistics.events;
-      Candidate_list& list = candidates[e.face];
+      Candidate_list& list = this->list(e.face);
       Candidate* entry = find_site(list, e.site);
       CGAL_assertion(entry != nullptr && is_waiting(*entry));
       if(dominated_in(list, *entry))
@@ -577,17 +613,13 @@ private:
         list.erase(list.begin() + (entry - list.data()));
         continue;
       }
-      if(touched && !(*touched)[e.face])
-      {
-        record_sites_before(e.face);
-        (*touched)[e.face] = 1;
-      }
+      if(mark) mark_touched(e.face);
       entry->from_edge = static_cast<std::uint8_t>(entry->from_edge & ~waiting);
       const Candidate x = *entry;
       ++front.statistics.admitted;
-      const Face_link& l = m_links[e.face];
+      const Face_link l = link(e.face);
       for(int k = 0; k < 3; ++k)
-        if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, e.face, k);
+        if(l.neighbor[k] != no_link && !banned(e.site, l.neighbor[k])) offer_across(front, x, l, k);
     }
     if(&front == &m_front) statistics.add(front.statistics), front.statistics = Propagation_statistics();
     // The queue's buffers grow to the front's widest extent (hundreds of megabytes on millions
@@ -607,6 +639,21 @@ private:
   Front m_front;                    // the global order's (the first propagation's without blocks, the repair's)
   std::vector<std::uint32_t> m_block_of;   // during a run in blocks
   std::vector<std::uint32_t>* m_sites_before = nullptr;   // during repropagate()
+  // repropagate()'s copies of the lists of the faces it reached, by face
+  struct Reached
+  {
+    std::uint32_t key;
+    std::uint32_t index;   // into m_local
+  };
+  struct Local_list
+  {
+    Candidate_list list;
+    std::size_t face;
+    bool touched;   // changed: written back
+  };
+  Candidate_table* m_table = nullptr;
+  Flat_hash_table<Reached> m_reached;
+  std::deque<Local_list> m_local;
 };
 
 } // namespace internal

@@ -39,6 +39,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -123,11 +124,17 @@ public:
       if(r.second) r.first->second = std::uint32_t(new_id(k, f));
       return std::size_t(r.first->second);
     };
+    std::vector<std::size_t> faces;       // the region's
+    std::vector<std::uint32_t> went, kept;   // the ids of its old pieces but corners, of the pieces around
     for(std::size_t f = 0; f < nf && held; ++f)
       if(in[f])
       {
         held = !m_cuts[f].degenerate;
         name_face(f, region, [&](const Vertex_key& k) { return id_in_region(k, f); });
+        faces.push_back(f);
+        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p)
+          for(std::uint32_t id : out.pieces[p].vertices)
+            if(out.vertices[id].kind != Partition::AT_CORNER) went.push_back(id);
       }
     // the points on each edge of the region, from its pieces and those across its border
     std::vector<std::tuple<std::uint32_t, double, std::uint32_t> > on_edges;   // (edge, t, id)
@@ -171,16 +178,33 @@ public:
       out.vertices.resize(old_vertices);
       return false;
     }
-    // the region's pieces in place of the old ones, and the vertices renumbered without the unused
-    std::vector<Partition::Piece> pieces;
-    pieces.reserve(out.pieces.size() + region.size());
-    for(std::size_t f = 0, r = 0; f < nf; ++f)
-      if(in[f])
-        for(; r < region.size() && region[r].face == f; ++r) pieces.push_back(std::move(region[r]));
-      else
-        for(std::size_t p = out.face_begin[f]; p < out.face_begin[f + 1]; ++p) pieces.push_back(std::move(out.pieces[p]));
-    out.pieces.swap(pieces);
-    out.rebuild_face_begin(nf);
+    // The ids only the region's old pieces used go to its new vertices; the vertices are
+    // renumbered all over only where fewer are new than went (none may stay unused).
+    for(const Partition::Piece& p : region) kept.insert(kept.end(), p.vertices.begin(), p.vertices.end());
+    for(const std::tuple<std::uint32_t, double, std::uint32_t>& x : on_edges) kept.push_back(std::get<2>(x));
+    for(std::vector<std::uint32_t>* ids : { &went, &kept })
+    {
+      std::sort(ids->begin(), ids->end());
+      ids->erase(std::unique(ids->begin(), ids->end()), ids->end());
+    }
+    std::vector<std::uint32_t> holes;
+    std::set_difference(went.begin(), went.end(), kept.begin(), kept.end(), std::back_inserter(holes));
+    // (welded vertices can join a crossing to pieces around a corner: renumbered all over)
+    const bool local = out.vertices.size() - old_vertices >= holes.size() && out.welded_vertices == 0;
+    if(local)
+    {
+      auto moved = [&](std::size_t id) {
+        const std::size_t i = id - old_vertices;
+        return std::uint32_t(i < holes.size() ? holes[i] : id - holes.size());
+      };
+      for(std::size_t id = old_vertices; id < out.vertices.size(); ++id) out.vertices[moved(id)] = out.vertices[id];
+      out.vertices.resize(out.vertices.size() - holes.size());
+      for(Partition::Piece& p : region)
+        for(std::uint32_t& id : p.vertices)
+          if(id >= old_vertices) id = moved(id);
+    }
+    out.replace_pieces(faces, region);
+    if(local) return true;
     std::vector<std::uint32_t> renumbered(out.vertices.size(), no_id);
     for(const Partition::Piece& p : out.pieces)
       for(std::uint32_t id : p.vertices) renumbered[id] = 0;
