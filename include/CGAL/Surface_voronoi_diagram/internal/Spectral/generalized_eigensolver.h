@@ -274,27 +274,15 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
   Eigen::Index converged = 0;
   try
   {
-    if(round == 0 && null_space.empty())
-      solver.init();
-    else if(round == 0)
-    {
-      // Spectra's own start vector, in the complement of the known null space
-      Spectra::SimpleRandom<double> rng(0);
-      Eigen::VectorXd start = rng.random_vec(n);
-      null_space.project(mass, start.data());
-      solver.init(start.data());
-    }
-    else
-    {
-      // A later round must not start where the first did: the first start vector's part in
-      // an eigenspace of several dimensions is the direction already found there, and
-      // deflated, so a Krylov space grown from it again is blind to the other copies of a
-      // repeated eigenvalue.
-      Spectra::SimpleRandom<double> rng(static_cast<unsigned long>(round) + 1);   // seeds 0 and 1 are the first's
-      Eigen::VectorXd start = rng.random_vec(n);
-      null_space.project(mass, start.data());
-      solver.init(start.data());
-    }
+    // The first round starts from Spectra's own start vector (seed 0), in the complement of
+    // the known null space. A later round must not start where the first did: the first
+    // start vector's part in an eigenspace of several dimensions is the direction already
+    // found there, and deflated, so a Krylov space grown from it again is blind to the other
+    // copies of a repeated eigenvalue (seeds 0 and 1 are the first's).
+    Spectra::SimpleRandom<double> rng(round == 0 ? 0ul : static_cast<unsigned long>(round) + 1);
+    Eigen::VectorXd start = rng.random_vec(n);
+    null_space.project(mass, start.data());
+    solver.init(start.data());
     converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol, Spectra::SortRule::SmallestAlge);
   }
   catch(const std::runtime_error& e)
@@ -420,7 +408,10 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
     }
     std::vector<Eigen::Index> order(static_cast<std::size_t>(merged_values.size()));
     for(std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<Eigen::Index>(k);
-    std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return merged_values[a] < merged_values[b]; });
+    // by value, ties in index order (as a stable sort, which would compile a second sort)
+    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+      return merged_values[a] < merged_values[b] || (!(merged_values[b] < merged_values[a]) && a < b);
+    });
     const Eigen::Index kept = (std::min<Eigen::Index>)(static_cast<Eigen::Index>(order.size()), nev + 8);
     values.resize(kept);
     vectors.resize(n, kept);
