@@ -21,6 +21,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/use.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -183,40 +184,35 @@ private:
   const double* m_mass = nullptr;
 };
 
-/// The product by B (the mass matrix) that Spectra's Lanczos takes several times per
-/// operator application, for its B inner products. The lumped mass matrix is diagonal, and
-/// multiplying by its diagonal is cheaper than a sparse product, to the same bits (each entry
-/// is one product); any other B goes through the sparse product.
+/// The product by B (the lumped mass matrix) that Spectra's Lanczos takes several times per
+/// operator application, for its B inner products: B is diagonal, and multiplying by its
+/// diagonal is cheaper than a sparse product, to the same bits (each entry is one product).
 class Mass_product
 {
 public:
   typedef double Scalar;
 
-  explicit Mass_product(const Eigen::SparseMatrix<double>& B) : m_B(B)
+  /// \pre `B` is compressed with exactly entry (j, j) in column j
+  explicit Mass_product(const Eigen::SparseMatrix<double>& B) : m_n(B.rows()), m_diagonal(B.valuePtr())
   {
-    // compressed with exactly entry (j, j) in column j: the values are the diagonal
     bool diagonal = B.isCompressed() && B.rows() == B.cols() && B.nonZeros() == B.rows();
     for(Eigen::Index j = 0; j < B.outerSize() && diagonal; ++j)
       diagonal = B.outerIndexPtr()[j] == j && B.innerIndexPtr()[j] == j;
-    if(diagonal)
-      m_diagonal = B.valuePtr();
+    CGAL_precondition_msg(diagonal, "the mass matrix must be diagonal");
+    CGAL_USE(diagonal);
   }
 
-  Eigen::Index rows() const { return m_B.rows(); }
-  Eigen::Index cols() const { return m_B.cols(); }
+  Eigen::Index rows() const { return m_n; }
+  Eigen::Index cols() const { return m_n; }
 
   void perform_op(const Scalar* x, Scalar* y) const
   {
-    const Eigen::Index n = m_B.rows();
-    if(m_diagonal != nullptr)
-      for(Eigen::Index i = 0; i < n; ++i) y[i] = m_diagonal[i] * x[i];
-    else
-      Eigen::Map<Eigen::VectorXd>(y, n).noalias() = m_B.selfadjointView<Eigen::Lower>() * Eigen::Map<const Eigen::VectorXd>(x, n);
+    for(Eigen::Index i = 0; i < m_n; ++i) y[i] = m_diagonal[i] * x[i];
   }
 
 private:
-  const Eigen::SparseMatrix<double>& m_B;
-  const double* m_diagonal = nullptr;   // B's values if B is diagonal
+  Eigen::Index m_n;
+  const double* m_diagonal;   // B's values
 };
 
 /// The default fill-reducing order: METIS's nested dissection for large matrices when CGAL is
@@ -400,8 +396,11 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
       Eigen::VectorXd v = new_vectors.col(keep[j]);
       // re-orthogonalize against what was found (M inner product), as rounding leaks
       null_space.project(mass.data(), v.data());
-      if(found > 0)
-        v -= vectors * (vectors.transpose() * (M * v));
+      if(found > 0)   // in steps: the products' types are those of the other products here
+      {
+        const Eigen::VectorXd mv = M * v, c = vectors.transpose() * mv;
+        v -= vectors * c;
+      }
       v /= std::sqrt(v.dot(M * v));
       merged_vectors.col(found + static_cast<Eigen::Index>(j)) = v;
       merged_values[found + static_cast<Eigen::Index>(j)] = v.dot(L * v);
