@@ -580,7 +580,7 @@ public:
     if(changed.empty()) m_data.clear_cells();
     m_centroids.clear();
     m_neighbors.clear();
-    compute<true, true>(previous.get(), timer, changed.empty() ? nullptr : &changed);
+    compute<true, true, true>(previous.get(), timer, changed.empty() ? nullptr : &changed);
   }
 
   /// releases what only the updates need (the search structure built to locate sites given
@@ -673,7 +673,7 @@ private:
     // only where the named parameters asking for them are given (and in update())
     constexpr bool may_select_globally = !is_default_parameter<NamedParameters, SVnp::candidate_selection_t>::value;
     constexpr bool for_relaxation = !is_default_parameter<NamedParameters, SVnp::cells_only_t>::value;
-    compute<may_select_globally, for_relaxation>(nullptr, timer);
+    compute<may_select_globally, for_relaxation, false>(nullptr, timer);
   }
 
   static void check_weight(double w, std::size_t i)
@@ -683,8 +683,8 @@ private:
   }
 
   // the cells of `m_data.sites`, with the propagation started from `previous` if given
-  // (embedding metrics)
-  template <bool MaySelectGlobally, bool ForRelaxation>
+  // (embedding metrics), updated from the previous cells if `changed` is (`Updating` only)
+  template <bool MaySelectGlobally, bool ForRelaxation, bool Updating>
   void compute(const Surface_voronoi::internal::Candidate_sites* previous, Surface_voronoi::internal::Stage_timer& timer,
                const std::vector<std::uint8_t>* changed = nullptr)
   {
@@ -712,9 +712,12 @@ private:
     // the lazy metric
     auto build = [&](const auto& fields) {
       timer.stop("setup");
-      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation>
+      SVi::Diagram_builder<TriangleMesh, std::decay_t<decltype(fields)>, MaySelectGlobally, ForRelaxation, Updating>
           builder(m_data, fields, m_settings, m_callback, m_times);
-      if(!(changed ? builder.update(*changed) : builder.run())) cancel();
+      bool done;
+      if constexpr(Updating) done = changed ? builder.update(*changed) : builder.run();
+      else done = builder.run();
+      if(!done) cancel();
       m_settings.previous = nullptr;   // the caller's, gone after this computation
     };
     if constexpr(SVi::Is_embedding<Metric>::value)

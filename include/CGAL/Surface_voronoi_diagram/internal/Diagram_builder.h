@@ -51,9 +51,9 @@ struct Builder_settings
 };
 
 // `MaySelectGlobally`: whether the caller may ask for GLOBAL_NEAREST candidates;
-// `ForRelaxation`: whether it may ask for Lloyd's warm start and cells-only diagrams. Without
-// them, the paths they take are not compiled in.
-template <class TriangleMesh, class Fields, bool MaySelectGlobally = true, bool ForRelaxation = true>
+// `ForRelaxation`: whether it may ask for Lloyd's warm start and cells-only diagrams;
+// `Updating`: whether it may call update(). Without them, the paths they take are not compiled in.
+template <class TriangleMesh, class Fields, bool MaySelectGlobally = true, bool ForRelaxation = true, bool Updating = true>
 class Diagram_builder
 {
 public:
@@ -130,8 +130,7 @@ public:
     dirty.erase(std::unique(dirty.begin(), dirty.end()), dirty.end());
     m_banned.erase_if([&](std::size_t site, std::size_t f) { return changed[site] || std::binary_search(dirty.begin(), dirty.end(), f); });
     std::vector<std::uint32_t> sites_before;
-    propagation.repropagate(d.candidates, dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); },
-                            m_touched, &sites_before, &changed);
+    propagation.repropagate(d.candidates, dirty, is_banned(), m_touched, &sites_before, &changed);
     m_fields.propagation_done();
     d.statistics.propagation_events = propagation.statistics.events;
     m_timer.stop("propagation");
@@ -196,6 +195,8 @@ private:
   static const Embedding_values* embedding_of(const Lazy&) { return nullptr; }
 
   bool progress(double fraction) const { return !m_callback || m_callback(fraction); }
+  // one type for the repair's and the update's refilling: one instantiation of it
+  auto is_banned() const { return [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); }; }
   bool repairs() const { return m_settings.repair && !use_global_nearest(); }
 
   void start_statistics()
@@ -264,7 +265,10 @@ private:
     // what the candidates alone decide (the vertices' owners) beside the stitching's naming
     // of the vertices, which runs on one thread: the two write to different arrays
     // an update's partition: the old one, stitched again around the faces cut again
-    if(!m_recut.empty() && Stitcher<TriangleMesh>(m_mesh, m_data.candidates, m_cuts).run_on(m_data.partition, m_recut))
+    bool restitched = false;
+    if constexpr(Updating)
+      restitched = !m_recut.empty() && Stitcher<TriangleMesh>(m_mesh, m_data.candidates, m_cuts).run_on(m_data.partition, m_recut);
+    if(restitched)
     {
       summarize_candidates();
       std::fill(m_recut.begin(), m_recut.end(), 0);
@@ -286,8 +290,7 @@ private:
       if(dirty.empty() || dirty.back() != x.second) dirty.push_back(x.second);
     }
     std::vector<std::uint32_t> sites_before;
-    propagation.repropagate(m_data.candidates, dirty, [this](std::size_t site, std::size_t f) { return m_banned.contains(site, f); },
-                            m_touched, &sites_before);
+    propagation.repropagate(m_data.candidates, dirty, is_banned(), m_touched, &sites_before);
     cut_faces(&m_touched);
     m_affected.assign(m_data.sites.size(), 0);
     for(std::uint32_t s : sites_before) m_affected[s] = 1;
@@ -335,10 +338,11 @@ private:
   void cut_faces(const std::vector<std::size_t>* which)
   {
     const Candidate_table& candidates = m_data.candidates;
-    if(!which) return m_cuts.cut(candidates, m_mesh.number_of_faces(), [](std::size_t k) { return k; }, m_settings.parallel);
-    for(std::size_t f : *which)
-      if(!m_recut.empty()) m_recut[f] = 1;
-    m_cuts.cut(candidates, which->size(), [which](std::size_t k) { return (*which)[k]; }, m_settings.parallel);
+    if(which && !m_recut.empty())
+      for(std::size_t f : *which) m_recut[f] = 1;
+    // one instantiation of the cutting for both: every face, or those of `which`
+    m_cuts.cut(candidates, which ? which->size() : m_mesh.number_of_faces(),
+               [which](std::size_t k) { return which ? (*which)[k] : k; }, m_settings.parallel);
   }
 
   // The statistics of the candidate lists, and the vertices' owners: the lowest (value,

@@ -21,6 +21,7 @@
 #include <CGAL/Surface_voronoi_diagram/exceptions.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/use.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -183,40 +184,35 @@ private:
   const double* m_mass = nullptr;
 };
 
-/// The product by B (the mass matrix) that Spectra's Lanczos takes several times per
-/// operator application, for its B inner products. The lumped mass matrix is diagonal, and
-/// multiplying by its diagonal is cheaper than a sparse product, to the same bits (each entry
-/// is one product); any other B goes through the sparse product.
+/// The product by B (the lumped mass matrix) that Spectra's Lanczos takes several times per
+/// operator application, for its B inner products: B is diagonal, and multiplying by its
+/// diagonal is cheaper than a sparse product, to the same bits (each entry is one product).
 class Mass_product
 {
 public:
   typedef double Scalar;
 
-  explicit Mass_product(const Eigen::SparseMatrix<double>& B) : m_B(B)
+  /// \pre `B` is compressed with exactly entry (j, j) in column j
+  explicit Mass_product(const Eigen::SparseMatrix<double>& B) : m_n(B.rows()), m_diagonal(B.valuePtr())
   {
-    // compressed with exactly entry (j, j) in column j: the values are the diagonal
     bool diagonal = B.isCompressed() && B.rows() == B.cols() && B.nonZeros() == B.rows();
     for(Eigen::Index j = 0; j < B.outerSize() && diagonal; ++j)
       diagonal = B.outerIndexPtr()[j] == j && B.innerIndexPtr()[j] == j;
-    if(diagonal)
-      m_diagonal = B.valuePtr();
+    CGAL_precondition_msg(diagonal, "the mass matrix must be diagonal");
+    CGAL_USE(diagonal);
   }
 
-  Eigen::Index rows() const { return m_B.rows(); }
-  Eigen::Index cols() const { return m_B.cols(); }
+  Eigen::Index rows() const { return m_n; }
+  Eigen::Index cols() const { return m_n; }
 
   void perform_op(const Scalar* x, Scalar* y) const
   {
-    const Eigen::Index n = m_B.rows();
-    if(m_diagonal != nullptr)
-      for(Eigen::Index i = 0; i < n; ++i) y[i] = m_diagonal[i] * x[i];
-    else
-      Eigen::Map<Eigen::VectorXd>(y, n).noalias() = m_B.selfadjointView<Eigen::Lower>() * Eigen::Map<const Eigen::VectorXd>(x, n);
+    for(Eigen::Index i = 0; i < m_n; ++i) y[i] = m_diagonal[i] * x[i];
   }
 
 private:
-  const Eigen::SparseMatrix<double>& m_B;
-  const double* m_diagonal = nullptr;   // B's values if B is diagonal
+  Eigen::Index m_n;
+  const double* m_diagonal;   // B's values
 };
 
 /// The default fill-reducing order: METIS's nested dissection for large matrices when CGAL is
@@ -274,27 +270,15 @@ void spectra_solve(Op& op, Mass_product& bop, Eigen::Index count, Eigen::Index n
   Eigen::Index converged = 0;
   try
   {
-    if(round == 0 && null_space.empty())
-      solver.init();
-    else if(round == 0)
-    {
-      // Spectra's own start vector, in the complement of the known null space
-      Spectra::SimpleRandom<double> rng(0);
-      Eigen::VectorXd start = rng.random_vec(n);
-      null_space.project(mass, start.data());
-      solver.init(start.data());
-    }
-    else
-    {
-      // A later round must not start where the first did: the first start vector's part in
-      // an eigenspace of several dimensions is the direction already found there, and
-      // deflated, so a Krylov space grown from it again is blind to the other copies of a
-      // repeated eigenvalue.
-      Spectra::SimpleRandom<double> rng(static_cast<unsigned long>(round) + 1);   // seeds 0 and 1 are the first's
-      Eigen::VectorXd start = rng.random_vec(n);
-      null_space.project(mass, start.data());
-      solver.init(start.data());
-    }
+    // The first round starts from Spectra's own start vector (seed 0), in the complement of
+    // the known null space. A later round must not start where the first did: the first
+    // start vector's part in an eigenspace of several dimensions is the direction already
+    // found there, and deflated, so a Krylov space grown from it again is blind to the other
+    // copies of a repeated eigenvalue (seeds 0 and 1 are the first's).
+    Spectra::SimpleRandom<double> rng(round == 0 ? 0ul : static_cast<unsigned long>(round) + 1);
+    Eigen::VectorXd start = rng.random_vec(n);
+    null_space.project(mass, start.data());
+    solver.init(start.data());
     converged = solver.compute(Spectra::SortRule::LargestMagn, max_iterations, tol, Spectra::SortRule::SmallestAlge);
   }
   catch(const std::runtime_error& e)
@@ -412,15 +396,21 @@ Eigen_solve_result smallest_generalized_eigenpairs(const Eigen::SparseMatrix<dou
       Eigen::VectorXd v = new_vectors.col(keep[j]);
       // re-orthogonalize against what was found (M inner product), as rounding leaks
       null_space.project(mass.data(), v.data());
-      if(found > 0)
-        v -= vectors * (vectors.transpose() * (M * v));
+      if(found > 0)   // in steps: the products' types are those of the other products here
+      {
+        const Eigen::VectorXd mv = M * v, c = vectors.transpose() * mv;
+        v -= vectors * c;
+      }
       v /= std::sqrt(v.dot(M * v));
       merged_vectors.col(found + static_cast<Eigen::Index>(j)) = v;
       merged_values[found + static_cast<Eigen::Index>(j)] = v.dot(L * v);
     }
     std::vector<Eigen::Index> order(static_cast<std::size_t>(merged_values.size()));
     for(std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<Eigen::Index>(k);
-    std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return merged_values[a] < merged_values[b]; });
+    // by value, ties in index order (as a stable sort, which would compile a second sort)
+    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+      return merged_values[a] < merged_values[b] || (!(merged_values[b] < merged_values[a]) && a < b);
+    });
     const Eigen::Index kept = (std::min<Eigen::Index>)(static_cast<Eigen::Index>(order.size()), nev + 8);
     values.resize(kept);
     vectors.resize(n, kept);
