@@ -19,7 +19,8 @@ DIR from igea.off by subdivide_midpoint.py when missing.
   lloyd    boot, 3,000 blue-noise sites, one thread: the median of `lloyd_step_2` to
            `lloyd_step_10` of `--lloyd 10` (euclidean, biharmonic, geodesic) against the
            median iteration of the harness's `cvt --lloyd 10 --threads 1`.
-  memory   the e2e cases: each process's peak resident memory, no output written.
+  memory   the e2e cases: each process's peak resident memory, no output written (the same runs
+           as e2e when both are asked).
   threads  the program's compute with --threads 2 against --threads 1 (igea and igea-537k,
            10k sites); geogram's RVD uses one thread.
 """
@@ -112,27 +113,28 @@ def count_lines(path):
     return sum(1 for line in open(path) if line.strip())
 
 
-def section_e2e(args, inputs, memory):
+def section_e2e(args, inputs, times, memory):
+    """The e2e cases, run once: their end to end times and their peak memory, as asked."""
     euclid = ["--metric", "euclidean", "--threads", "1"]
-    if memory:
-        print("\n## Peak memory (MB), end to end, no output\n")
-        print("| mesh | sites | ours | geogram | ours / geogram |")
-    else:
-        print("\n## End to end (s), one thread\n")
-        print("| mesh | sites | ours | geogram | ours / geogram |")
-    print("|---|---|---|---|---|")
+    rows_time, rows_memory = [], []
     for mesh, sites in e2e_cases(args, inputs):
         theirs, ours = median_pairs(args.repeat, lambda: harness_rvd(args.harness, mesh, sites),
                                     lambda: program_stats(args.program, mesh, ["--sites", sites] + euclid))
-        if memory:
-            a = statistics.median(p for _, p in ours)
-            b = statistics.median(p for _, _, p in theirs)
-            print("| %s | %d | %.1f | %.1f | %.2f |" % (os.path.basename(mesh), count_lines(sites), a, b, a / b))
-        else:
-            a = statistics.median(float(s["end_to_end"]) for s, _ in ours)
-            b = statistics.median(l + t for l, t, _ in theirs)
-            print("| %s | %d | %.3f | %.3f | %.2f |" % (os.path.basename(mesh), count_lines(sites), a, b, a / b))
-        sys.stdout.flush()
+        name, count = os.path.basename(mesh), count_lines(sites)
+        a = statistics.median(float(s["end_to_end"]) for s, _ in ours)
+        b = statistics.median(l + t for l, t, _ in theirs)
+        rows_time.append("| %s | %d | %.3f | %.3f | %.2f |" % (name, count, a, b, a / b))
+        a = statistics.median(p for _, p in ours)
+        b = statistics.median(p for _, _, p in theirs)
+        rows_memory.append("| %s | %d | %.1f | %.1f | %.2f |" % (name, count, a, b, a / b))
+    for wanted, title, rows in ((times, "End to end (s), one thread", rows_time),
+                                (memory, "Peak memory (MB), end to end, no output", rows_memory)):
+        if wanted:
+            print("\n## %s\n" % title)
+            print("| mesh | sites | ours | geogram | ours / geogram |")
+            print("|---|---|---|---|---|")
+            print("\n".join(rows))
+    sys.stdout.flush()
 
 
 def slope(xs, ys):
@@ -212,9 +214,14 @@ def main():
     args = parser.parse_args()
     inputs = Inputs(args)
     print("load average before: %s; medians of %d runs per side" % (load(), args.repeat))
-    for section in args.sections.split(","):
-        {"e2e": lambda: section_e2e(args, inputs, False), "memory": lambda: section_e2e(args, inputs, True),
-         "sites": lambda: section_sites(args, inputs), "lloyd": lambda: section_lloyd(args, inputs),
+    sections = args.sections.split(",")
+    for section in sections:
+        if section in ("e2e", "memory"):
+            # one set of runs gives both tables, printed where the first of them is asked
+            if section == next(x for x in sections if x in ("e2e", "memory")):
+                section_e2e(args, inputs, "e2e" in sections, "memory" in sections)
+            continue
+        {"sites": lambda: section_sites(args, inputs), "lloyd": lambda: section_lloyd(args, inputs),
          "threads": lambda: section_threads(args, inputs)}[section]()
     print("\nload average after: %s" % load())
 
